@@ -1,0 +1,73 @@
+#ifndef softopt_geometry_geometry_h
+#define softopt_geometry_geometry_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
+
+#include <softopt/base/input.h>
+
+#include <array>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace softopt
+{
+  /**
+   * The body to analyze and the roles of its boundaries (subsection
+   * "Geometry"): the tetrahedral mesh, read from a gmsh .msh file or meshed
+   * by calling gmsh on a .geo file, and which boundary ids are clamped,
+   * pressurized or designed. Boundary ids are gmsh's physical surface tags.
+   */
+  class Geometry
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm, const InputFile &input);
+
+    /**
+     * Reads the mesh on every rank (running gmsh first for a .geo), checks
+     * that every boundary id named in the parameter file exists, partitions
+     * the cells with METIS and builds the fully distributed triangulation.
+     */
+    void
+    create_triangulation(
+      parallel::fullydistributed::Triangulation<3> &triangulation) const;
+
+    /** The mesh file, resolved against the parameter file's folder. */
+    std::string mesh_file;
+
+    /** Target element size in mm when meshing a .geo file. */
+    double mesh_size = 2.0;
+
+    /** Fixed displacement components on each Dirichlet boundary id. */
+    std::map<types::boundary_id, std::array<bool, 3>> dirichlet_boundaries;
+
+    /** Boundary ids of the closed cavity's walls (the follower pressure). */
+    std::vector<types::boundary_id> pressure_boundary_ids;
+
+    /** Boundary ids of the design surface dOmega^d. */
+    std::vector<types::boundary_id> design_boundary_ids;
+
+    /**
+     * Partitions @p serial with METIS (under MPI) and builds the fully
+     * distributed @p triangulation from it.
+     */
+    static void
+    distribute(Triangulation<3>                             &serial,
+               parallel::fullydistributed::Triangulation<3> &triangulation);
+
+  private:
+    /** Runs gmsh on the .geo file and returns the path of the .msh it wrote. */
+    std::string
+    mesh_with_gmsh(const MPI_Comm comm) const;
+
+    /** Where each boundary role came from, for messages. */
+    std::string where_dirichlet, where_pressure, where_design, where_mesh;
+  };
+} // namespace softopt
+
+#endif

@@ -1,0 +1,90 @@
+#ifndef softopt_path_path_following_h
+#define softopt_path_path_following_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <softopt/base/input.h>
+#include <softopt/path/equilibrium_problem.h>
+#include <softopt/path/newton_solver.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace softopt
+{
+  /**
+   * Follows the equilibrium path r_a(a, lambda) = 0 from lambda = 0 and lands
+   * exactly on each target load factor (subsection "Loading"). Knows
+   * residuals and solves, not physics.
+   */
+  class PathFollowing
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm, const InputFile &input);
+
+    /** A converged point of the path. */
+    struct PathPoint
+    {
+      unsigned int step              = 0;
+      double       load_factor       = 0;
+      unsigned int newton_iterations = 0;
+      double       residual_norm     = 0;
+      bool         at_target         = false;
+    };
+
+    /**
+     * Called after every converged step with the state there; returns a
+     * reason to stop (for example a cavity volume limit), or "" to go on.
+     */
+    using Observer =
+      std::function<std::string(const PathPoint &,
+                                const EquilibriumProblem::Vector &)>;
+
+    /** How the path ended, and the states kept at the targets. */
+    struct Result
+    {
+      /** Printed and written to the output. */
+      std::string stop_reason;
+      /** False if the path stopped because a step could not be solved. */
+      bool failed = false;
+      /** The last converged point. */
+      PathPoint last;
+      /** Converged states at the targets reached, in order. */
+      std::vector<double>                     target_load_factors;
+      std::vector<EquilibriumProblem::Vector> target_states;
+    };
+
+    /**
+     * Follows the path from the zero state up to the last of
+     * @p targets (sorted, in (0, inf)).
+     */
+    Result
+    run(EquilibriumProblem        &problem,
+        const NewtonSolver        &newton,
+        const std::vector<double> &targets,
+        const Observer            &observer,
+        const ConditionalOStream  &log) const;
+
+    /** Cavity pressure at load factor 1, in kPa. */
+    double pressure_kPa = 15;
+
+    /** Load factors at which a converged state is required. */
+    std::vector<double> target_load_factors{1.};
+
+    double       initial_increment = 0.25;
+    double       minimum_increment = 1e-4;
+    double       maximum_increment = 1.;
+    unsigned int maximum_steps     = 200;
+
+    /** Stop once V_c / V_0 of the cavity exceeds this (0: no limit). */
+    double maximum_volume_ratio = 0;
+  };
+} // namespace softopt
+
+#endif

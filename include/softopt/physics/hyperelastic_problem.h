@@ -1,0 +1,180 @@
+#ifndef softopt_physics_hyperelastic_problem_h
+#define softopt_physics_hyperelastic_problem_h
+
+#include <deal.II/base/index_set.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
+
+#include <softopt/geometry/geometry.h>
+#include <softopt/path/equilibrium_problem.h>
+#include <softopt/physics/neo_hookean_mixed.h>
+#include <softopt/solvers/direct_solver.h>
+
+#include <memory>
+#include <string>
+
+namespace softopt
+{
+  /**
+   * Finite strain, nearly incompressible hyperelasticity with a follower
+   * cavity pressure (Eqs. deltaW01, res, LinMat, statCond0-2 and the
+   * appendix), on quadratic tetrahedra with an element-wise constant
+   * pressure: FESystem(FE_SimplexP<3>(2)^3, FE_SimplexDGP<3>(0)).
+   *
+   * The state a = [u, p~] holds both fields. The element pressure is
+   * condensed out per cell: assemble() returns the condensed residual
+   * r^e = r_u^e - K_up^e (K_pp^e)^{-1} r_p^e and tangent
+   * K^e = K_uu^e - K_up^e (K_pp^e)^{-1} K_pu^e (Eq. statCond2), the global
+   * system carries the pressure DoFs as decoupled identity rows, and update()
+   * recovers dp~^e from du^e by Eq. statCond1. (Solving r_p = 0 exactly for
+   * p~(u) instead gives the same solution but a penalty-like Newton
+   * iteration that copes badly with K >> G.)
+   *
+   * The class runs on whatever mapping it is handed (MappingFE for the mesh
+   * as read, MappingFEField for a shape-optimized design) and knows nothing
+   * of shapes. Units: mm, N, MPa.
+   */
+  class HyperelasticProblem : public EquilibriumProblem
+  {
+  public:
+    /**
+     * @p pressure is the cavity pressure at load factor 1, in MPa.
+     * The triangulation, mapping, geometry and material must outlive this.
+     */
+    HyperelasticProblem(const Triangulation<3> &triangulation,
+                        const Mapping<3>       &mapping,
+                        const Geometry         &geometry,
+                        const NeoHookeanMixed  &material,
+                        const double            pressure);
+
+    /** Distributes DoFs, builds the constraints and the matrix. */
+    void
+    setup_system();
+
+    Vector
+    create_vector() const override;
+
+    void
+    assemble(const Vector &a,
+             const double  load_factor,
+             Vector       &residual,
+             Vector       &load,
+             const bool    with_tangent) override;
+
+    void
+    factorize() override;
+
+    void
+    solve(const Vector &b, Vector &x) const override;
+
+    unsigned int
+    n_negative_pivots() const override;
+
+    void
+    update(Vector &a, const Vector &du) const override;
+
+    /** The tangent of the last assemble() (for tests and adjoints). */
+    const PETScWrappers::MPI::SparseMatrix &
+    tangent() const;
+
+    /** Sets the element pressures of @p a to p~(u), which makes r_p = 0. */
+    void
+    store_pressure(Vector &a) const;
+
+    /**
+     * The cavity volume V_c^p = -1/3 int x . n_c da over the pressure
+     * boundary (divergence theorem, the paper's footnote; n_c points out of
+     * the solid), in mm^3. Positive for a closed cavity, and for a cavity cut
+     * by symmetry planes through the origin.
+     */
+    double
+    cavity_volume(const Vector &a) const;
+
+    /**
+     * Smallest J over all quadrature points, and its position in the
+     * reference configuration (for messages about inverted elements).
+     */
+    double
+    min_jacobian(const Vector &a) const;
+
+    /**
+     * Writes displacement, condensed pressure p~ (MPa), cell mean J and
+     * cell mean Cauchy stress (MPa) to directory/name_NNNN.vtu (with a .pvtu
+     * record under MPI) and returns the file name to list in a .pvd.
+     */
+    std::string
+    write_vtu(const Vector       &a,
+              const std::string &directory,
+              const std::string &name,
+              const unsigned int counter) const;
+
+    const DoFHandler<3> &
+    get_dof_handler() const;
+
+    const Mapping<3> &
+    get_mapping() const;
+
+    const FESystem<3> &
+    get_fe() const;
+
+    const NeoHookeanMixed &
+    get_material() const;
+
+    const Geometry &
+    get_geometry() const;
+
+    /** The cavity pressure at load factor 1, in MPa. */
+    double
+    get_pressure() const;
+
+    /** Volume quadrature (6 points, degree 3) and face quadrature (7 points,
+     * degree 5: exact for the P2 follower load and cavity volume). */
+    const Quadrature<3> &
+    cell_quadrature() const;
+    const Quadrature<2> &
+    face_quadrature() const;
+
+    /** The Dirichlet constraints (homogeneous). */
+    const AffineConstraints<double> &
+    get_constraints() const;
+
+    /** A ghosted copy of @p a for reading values on locally owned cells. */
+    Vector
+    ghosted(const Vector &a) const;
+
+    MPI_Comm
+    get_communicator() const;
+
+  private:
+    MPI_Comm                triangulation_comm;
+    const Triangulation<3> &triangulation;
+    const Mapping<3>       &mapping;
+    const Geometry         &geometry;
+    const NeoHookeanMixed  &material;
+    const double            pressure;
+
+    FESystem<3>           fe;
+    DoFHandler<3>         dof_handler;
+    QGaussSimplex<3>      quadrature;
+    QGaussSimplex<2>      quadrature_face;
+    IndexSet              locally_owned_dofs;
+    IndexSet              locally_relevant_dofs;
+    AffineConstraints<double> constraints;
+
+    /** Per locally owned cell, from the last assemble(): r_p^e, the
+     * coupling b^e = -K_up^e and |Omega^e|, for update(). */
+    std::vector<double>                 cell_pressure_residual;
+    std::vector<dealii::Vector<double>> cell_coupling;
+    std::vector<double>                 cell_volume;
+
+    PETScWrappers::MPI::SparseMatrix system_matrix;
+    DirectSolver                     direct_solver;
+  };
+} // namespace softopt
+
+#endif

@@ -1,0 +1,151 @@
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/fe/mapping_fe.h>
+
+#include <softopt/app/analysis.h>
+#include <softopt/app/output_directory.h>
+#include <softopt/functionals/surface_mean.h>
+#include <softopt/io/csv_writer.h>
+#include <softopt/io/pvd_series.h>
+#include <softopt/physics/hyperelastic_problem.h>
+
+#include <iomanip>
+
+namespace softopt
+{
+  namespace
+  {
+    /** The design-surface means of load_path.csv: u_x, and the inward
+     * radial displacement about the x axis. */
+    std::pair<double, double>
+    design_means(const HyperelasticProblem         &problem,
+                 const HyperelasticProblem::Vector &a)
+    {
+      if (problem.get_geometry().design_boundary_ids.empty())
+        return {std::nan(""), std::nan("")};
+      const auto x_axis = [](const Point<3> &) {
+        return Tensor<1, 3>({1., 0., 0.});
+      };
+      const auto inward = [](const Point<3> &X) {
+        return Tensor<1, 3>({0., -X[1], -X[2]}) /
+               std::hypot(X[1], X[2]);
+      };
+      return {design_surface_mean(problem, a, x_axis),
+              design_surface_mean(problem, a, inward)};
+    }
+  } // namespace
+
+
+
+  int
+  run_analysis(Settings &settings)
+  {
+    const MPI_Comm     comm = MPI_COMM_WORLD;
+    ConditionalOStream pcout(std::cout,
+                             Utilities::MPI::this_mpi_process(comm) == 0);
+    TimerOutput        timer(comm, pcout, TimerOutput::never, TimerOutput::wall_times);
+
+    parallel::fullydistributed::Triangulation<3> triangulation(comm);
+    {
+      TimerOutput::Scope scope(timer, "mesh");
+      settings.geometry.create_triangulation(triangulation);
+    }
+    const MappingFE<3>    mapping(FE_SimplexP<3>(1));
+    const NeoHookeanMixed material(settings.material.youngs_modulus,
+                                   settings.material.poissons_ratio);
+    HyperelasticProblem   problem(triangulation,
+                                mapping,
+                                settings.geometry,
+                                material,
+                                settings.loading.pressure_kPa * 1e-3);
+    {
+      TimerOutput::Scope scope(timer, "setup");
+      problem.setup_system();
+    }
+    pcout << "Mesh: " << triangulation.n_global_active_cells()
+          << " tetrahedra, " << problem.get_dof_handler().n_dofs()
+          << " degrees of freedom" << std::endl;
+
+    HyperelasticProblem::Vector a = problem.create_vector();
+    const double initial_volume   = problem.cavity_volume(a);
+    AssertThrow(initial_volume > 0,
+                ExcMessage(settings.input->where("Geometry",
+                                                 "Pressure boundary ids") +
+                           ": the pressure boundary does not enclose a "
+                           "positive cavity volume (V = " +
+                           Utilities::to_string(initial_volume) +
+                           " mm^3). It must be all walls of one closed "
+                           "cavity (or a cavity cut by symmetry planes "
+                           "through the origin)."));
+    pcout << "Cavity volume: " << initial_volume << " mm^3" << std::endl;
+
+    // Input is checked: only now touch the output directory.
+    const OutputDirectory out(settings.output_directory, comm);
+    out.write_parameters(settings.prm);
+    CsvWriter load_path(out.file("load_path.csv"),
+                        {"step",
+                         "load_factor",
+                         "pressure_kPa",
+                         "cavity_volume_mm3",
+                         "delta_volume_mm3",
+                         "design_mean_ux_mm",
+                         "design_mean_inward_radial_mm",
+                         "newton_iterations",
+                         "residual_norm_N",
+                         "at_target"},
+                        comm);
+    PvdSeries pvd(out.file("solution.pvd"), comm);
+
+    unsigned int vtu_counter = 0;
+    const auto   record      = [&](const PathFollowing::PathPoint  &point,
+                            const HyperelasticProblem::Vector &state) {
+      TimerOutput::Scope scope(timer, "output");
+      const double volume            = problem.cavity_volume(state);
+      const auto [mean_ux, mean_in]  = design_means(problem, state);
+      const double       p_kPa = point.load_factor * settings.loading.pressure_kPa;
+      load_path.add_row({std::to_string(point.step),
+                         CsvWriter::format(point.load_factor),
+                         CsvWriter::format(p_kPa),
+                         CsvWriter::format(volume),
+                         CsvWriter::format(volume - initial_volume),
+                         CsvWriter::format(mean_ux),
+                         CsvWriter::format(mean_in),
+                         std::to_string(point.newton_iterations),
+                         CsvWriter::format(point.residual_norm),
+                         point.at_target ? "1" : "0"});
+      if (settings.vtu_output == Settings::VtuOutput::every_step ||
+          (settings.vtu_output == Settings::VtuOutput::targets &&
+           point.at_target))
+        pvd.add(point.load_factor,
+                problem.write_vtu(state, out.path(), "solution", vtu_counter++));
+      pcout << "step " << std::setw(3) << point.step << "  lambda "
+            << std::setprecision(6) << std::setw(10) << point.load_factor
+            << "  p " << std::setw(9) << p_kPa << " kPa  dV "
+            << std::setw(11) << volume - initial_volume << " mm^3  u_x "
+            << std::setw(11) << mean_ux << "  u_in " << std::setw(11)
+            << mean_in << "  Newton " << point.newton_iterations
+            << std::endl;
+      if (settings.loading.maximum_volume_ratio > 0 &&
+          volume > settings.loading.maximum_volume_ratio * initial_volume)
+        return std::string("the cavity volume exceeded ") +
+               Utilities::to_string(settings.loading.maximum_volume_ratio) +
+               " times its initial volume";
+      return std::string();
+    };
+
+    record({0, 0., 0, 0., false}, a);
+    PathFollowing::Result result;
+    {
+      TimerOutput::Scope scope(timer, "path following");
+      result = settings.loading.run(
+        problem, settings.newton, settings.loading.target_load_factors, record, pcout);
+    }
+    pcout << "Stopped: " << result.stop_reason << std::endl;
+    out.write_text("stop_reason.txt", result.stop_reason + "\n");
+    if (settings.print_timings)
+      timer.print_summary();
+    return result.failed ? 1 : 0;
+  }
+} // namespace softopt

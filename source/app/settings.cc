@@ -1,0 +1,62 @@
+#include <softopt/app/settings.h>
+
+namespace softopt
+{
+  void
+  Settings::declare_parameters(ParameterHandler &prm)
+  {
+    prm.declare_entry("Output directory",
+                      "output",
+                      Patterns::DirectoryName(),
+                      "Where results go (relative to the working directory); "
+                      "created if missing. A run overwrites the files it "
+                      "writes there, but only after its input has been "
+                      "checked.");
+    prm.declare_entry("Command",
+                      "analyze",
+                      Patterns::Selection("analyze|optimize|check-gradients"),
+                      "What \"softopt CASE.prm\" does when no command is "
+                      "given on the command line.");
+    prm.declare_entry("Print timings",
+                      "true",
+                      Patterns::Bool(),
+                      "Print wall times at the end of a run (tests switch "
+                      "this off so that their output holds only physics).");
+    prm.enter_subsection("Output");
+    prm.declare_entry("VTU output",
+                      "every step",
+                      Patterns::Selection("every step|targets|none"),
+                      "Which converged states of the load path are written "
+                      "as VTU files (listed in solution.pvd, for ParaView).");
+    prm.leave_subsection();
+
+    Geometry::declare_parameters(prm);
+    MaterialParameters::declare_parameters(prm);
+    PathFollowing::declare_parameters(prm);
+    NewtonSolver::declare_parameters(prm);
+  }
+
+
+
+  Settings::Settings(const std::string &file)
+    : input(std::make_unique<InputFile>(file))
+  {
+    declare_parameters(prm);
+    prm.parse_input(file);
+
+    output_directory = prm.get("Output directory");
+    command          = prm.get("Command");
+    print_timings    = prm.get_bool("Print timings");
+    prm.enter_subsection("Output");
+    const std::string vtu = prm.get("VTU output");
+    vtu_output = vtu == "every step" ? VtuOutput::every_step :
+                 vtu == "targets"    ? VtuOutput::targets :
+                                       VtuOutput::none;
+    prm.leave_subsection();
+
+    geometry.parse_parameters(prm, *input);
+    material.parse_parameters(prm, *input);
+    loading.parse_parameters(prm, *input);
+    newton.parse_parameters(prm);
+  }
+} // namespace softopt

@@ -1,0 +1,203 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/grid/tria_description.h>
+
+#include <softopt/geometry/geometry.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace softopt
+{
+  void
+  Geometry::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Geometry");
+    prm.declare_entry(
+      "Mesh file",
+      "../meshes/actuator.geo",
+      Patterns::FileName(),
+      "The tetrahedral mesh, relative to this parameter file's folder: a gmsh "
+      ".msh file (format 2.2 or 4.1, linear tetrahedra, with a Physical Volume "
+      "and Physical Surfaces whose tags are the boundary ids used below), or "
+      "a gmsh .geo file that softopt meshes with gmsh at the mesh size below "
+      "(the .geo reads it as DefineConstant[h = ...]).");
+    prm.declare_entry("Mesh size",
+                      "2",
+                      Patterns::Double(1e-6),
+                      "Target element size in mm when meshing a .geo file "
+                      "(ignored for a .msh file).");
+    prm.declare_entry(
+      "Dirichlet boundaries",
+      "1: xyz",
+      Patterns::Map(Patterns::Integer(0, 254),
+                    Patterns::Anything(),
+                    1,
+                    Patterns::Map::max_int_value,
+                    ";",
+                    ":"),
+      "Boundaries with zero displacement, as \"id: components; id: "
+      "components\" with components from x, y, z: \"1: xyz\" clamps boundary "
+      "1, \"5: x\" fixes only the x displacement (a symmetry plane normal to "
+      "x).");
+    prm.declare_entry("Pressure boundary ids",
+                      "2",
+                      Patterns::List(Patterns::Integer(0, 254), 1),
+                      "Boundary ids of the walls of the closed, pressurized "
+                      "cavity (the follower pressure acts on them).");
+    prm.declare_entry("Design boundary ids",
+                      "3",
+                      Patterns::List(Patterns::Integer(0, 254)),
+                      "Boundary ids of the design surface dOmega^d on which "
+                      "objectives and constraints are evaluated.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  Geometry::parse_parameters(ParameterHandler &prm, const InputFile &input)
+  {
+    prm.enter_subsection("Geometry");
+    where_mesh = input.where("Geometry", "Mesh file");
+    mesh_file  = input.resolve(prm.get("Mesh file"));
+    mesh_size  = prm.get_double("Mesh size");
+
+    where_dirichlet      = input.where("Geometry", "Dirichlet boundaries");
+    dirichlet_boundaries = parse_dirichlet_boundaries(prm.get(
+                                                        "Dirichlet boundaries"),
+                                                      where_dirichlet);
+    where_pressure        = input.where("Geometry", "Pressure boundary ids");
+    pressure_boundary_ids = parse_boundary_ids(prm.get("Pressure boundary ids"),
+                                               where_pressure);
+    where_design        = input.where("Geometry", "Design boundary ids");
+    design_boundary_ids = parse_boundary_ids(prm.get("Design boundary ids"),
+                                             where_design);
+    prm.leave_subsection();
+
+    const std::string extension =
+      std::filesystem::path(mesh_file).extension().string();
+    AssertThrow(extension == ".msh" || extension == ".geo",
+                ExcMessage(where_mesh + ": <" + mesh_file +
+                           "> is neither a .msh nor a .geo file."));
+    AssertThrow(std::ifstream(mesh_file).good(),
+                ExcMessage(where_mesh + ": cannot read <" + mesh_file + ">."));
+  }
+
+
+
+  std::string
+  Geometry::mesh_with_gmsh(const MPI_Comm comm) const
+  {
+    // Rank 0 meshes into a temporary file; every rank then reads it.
+    std::string msh_file;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        const auto tmp = std::filesystem::temp_directory_path() /
+                         ("softopt-" + std::to_string(::getpid()) + "-" +
+                          std::filesystem::path(mesh_file).stem().string());
+        msh_file              = tmp.string() + ".msh";
+        const std::string log = tmp.string() + ".log";
+        std::ostringstream command;
+        command << "gmsh -3 -order 1 -format msh22 -v 3 -setnumber h "
+                << mesh_size << " \"" << mesh_file << "\" -o \"" << msh_file
+                << "\" > \"" << log << "\" 2>&1";
+        const int status = std::system(command.str().c_str());
+        std::ifstream     log_in(log);
+        std::stringstream log_text;
+        log_text << log_in.rdbuf();
+        std::filesystem::remove(log);
+        if (status != 0 || !std::ifstream(msh_file).good())
+          msh_file = "gmsh failed on <" + mesh_file + "> (command: " +
+                     command.str() + "):\n" + log_text.str();
+      }
+    msh_file = Utilities::MPI::broadcast(comm, msh_file, 0);
+    AssertThrow(msh_file.rfind("gmsh failed", 0) != 0,
+                ExcMessage(where_mesh + ": " + msh_file));
+    return msh_file;
+  }
+
+
+
+  void
+  Geometry::create_triangulation(
+    parallel::fullydistributed::Triangulation<3> &triangulation) const
+  {
+    const MPI_Comm comm = triangulation.get_communicator();
+    const bool     from_geo =
+      std::filesystem::path(mesh_file).extension() == ".geo";
+    const std::string msh_file = from_geo ? mesh_with_gmsh(comm) : mesh_file;
+
+    Triangulation<3> serial;
+    try
+      {
+        GridIn<3> grid_in(serial);
+        std::ifstream in(msh_file);
+        grid_in.read_msh(in);
+      }
+    catch (const std::exception &e)
+      {
+        if (from_geo && Utilities::MPI::this_mpi_process(comm) == 0)
+          std::filesystem::remove(msh_file);
+        AssertThrow(false,
+                    ExcMessage(where_mesh + ": deal.II cannot read the mesh <" +
+                               msh_file + ">:\n" + e.what()));
+      }
+    if (from_geo)
+      {
+        MPI_Barrier(comm);
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          std::filesystem::remove(msh_file);
+      }
+
+    AssertThrow(serial.n_active_cells() > 0,
+                ExcMessage(where_mesh + ": the mesh has no cells (a gmsh file "
+                                        "without a Physical Volume holds no "
+                                        "tetrahedra)."));
+    for (const auto &cell : serial.active_cell_iterators())
+      AssertThrow(cell->reference_cell() == ReferenceCells::Tetrahedron,
+                  ExcMessage(where_mesh + ": softopt needs a mesh of "
+                                          "tetrahedra only."));
+
+    // Every boundary id the case names must exist in the mesh.
+    const auto present = serial.get_boundary_ids();
+    const auto check   = [&](const types::boundary_id id,
+                           const std::string       &where) {
+      std::string list;
+      for (const auto b : present)
+        list += (list.empty() ? "" : ", ") + std::to_string(b);
+      AssertThrow(std::find(present.begin(), present.end(), id) !=
+                    present.end(),
+                  ExcMessage(where + ": the mesh has no boundary with id " +
+                             std::to_string(id) + " (it has " + list + ")."));
+    };
+    for (const auto &[id, components] : dirichlet_boundaries)
+      check(id, where_dirichlet);
+    for (const auto id : pressure_boundary_ids)
+      check(id, where_pressure);
+    for (const auto id : design_boundary_ids)
+      check(id, where_design);
+
+    distribute(serial, triangulation);
+  }
+
+
+
+  void
+  Geometry::distribute(Triangulation<3>                             &serial,
+                       parallel::fullydistributed::Triangulation<3> &triangulation)
+  {
+    const MPI_Comm     comm    = triangulation.get_communicator();
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(comm);
+    if (n_ranks > 1)
+      GridTools::partition_triangulation(n_ranks, serial);
+    const auto description =
+      TriangulationDescription::Utilities::create_description_from_triangulation(
+        serial, comm);
+    triangulation.create_triangulation(description);
+  }
+} // namespace softopt

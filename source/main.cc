@@ -1,0 +1,108 @@
+// softopt: shape optimization of pneumatic soft actuators.
+// The program only dispatches a command to the library.
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <softopt/app/analysis.h>
+#include <softopt/app/settings.h>
+
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+  const char *usage =
+    "Usage:\n"
+    "  softopt analyze CASE.prm          inflate the design along its load path\n"
+    "  softopt CASE.prm                  run the prm file's \"Command\"\n"
+    "  softopt print-parameters          every entry, with its default and "
+    "documentation\n"
+    "  softopt --help                    this text and every entry\n"
+    "Under MPI: mpirun -np N softopt ...\n";
+
+  void
+  print_parameters(std::ostream &out)
+  {
+    dealii::ParameterHandler prm;
+    softopt::Settings::declare_parameters(prm);
+    prm.print_parameters(out, dealii::ParameterHandler::PRM);
+  }
+} // namespace
+
+
+
+int
+main(int argc, char **argv)
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  const std::vector<std::string> args(argv + 1, argv + argc);
+
+  try
+    {
+      if (args.empty() || args[0] == "--help" || args[0] == "-h")
+        {
+          if (root)
+            {
+              std::cout << usage << "\nParameters:\n\n";
+              print_parameters(std::cout);
+            }
+          return args.empty() ? 1 : 0;
+        }
+      if (args[0] == "print-parameters")
+        {
+          if (root)
+            print_parameters(std::cout);
+          return 0;
+        }
+
+      std::string command, file;
+      if (args[0] == "analyze")
+        {
+          AssertThrow(args.size() == 2,
+                      dealii::ExcMessage(std::string("\"softopt ") + args[0] +
+                                         "\" needs one parameter file.\n" +
+                                         usage));
+          command = args[0];
+          file    = args[1];
+        }
+      else
+        {
+          AssertThrow(args.size() == 1 && args[0].size() > 4 &&
+                        args[0].substr(args[0].size() - 4) == ".prm",
+                      dealii::ExcMessage("Unknown command \"" + args[0] +
+                                         "\".\n" + usage));
+          file = args[0];
+        }
+
+      softopt::Settings settings(file);
+      if (command.empty())
+        command = settings.command;
+      AssertThrow(command == "analyze",
+                  dealii::ExcMessage("The command \"" + command +
+                                     "\" is not available yet."));
+      return softopt::run_analysis(settings);
+    }
+  catch (const dealii::ExceptionBase &e)
+    {
+      if (root)
+        {
+          std::cerr << "\nsoftopt: error: ";
+          e.print_info(std::cerr);
+          std::cerr << std::endl;
+        }
+    }
+  catch (const std::exception &e)
+    {
+      if (root)
+        std::cerr << "\nsoftopt: error: " << e.what() << std::endl;
+    }
+  // Every error the program raises is raised on all ranks alike; abort
+  // rather than hang if one was not.
+  if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
+    MPI_Abort(MPI_COMM_WORLD, 1);
+  return 1;
+}

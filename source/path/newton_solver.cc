@@ -1,0 +1,82 @@
+#include <softopt/base/step_failure.h>
+#include <softopt/path/newton_solver.h>
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+namespace softopt
+{
+  void
+  NewtonSolver::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    prm.declare_entry("Residual tolerance",
+                      "1e-8",
+                      Patterns::Double(1e-15, 1e-1),
+                      "Newton stops when the l2 norm of the residual (N) is "
+                      "below this fraction of the l2 norm of the external "
+                      "load lambda P (N).");
+    prm.declare_entry("Maximum iterations",
+                      "12",
+                      Patterns::Integer(1, 200),
+                      "Newton iterations after which a load step counts as "
+                      "failed and is cut back.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  NewtonSolver::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Newton");
+    tolerance      = prm.get_double("Residual tolerance");
+    max_iterations = prm.get_integer("Maximum iterations");
+    prm.leave_subsection();
+  }
+
+
+
+  bool
+  NewtonSolver::converged(const double residual_norm,
+                          const double load_norm) const
+  {
+    return residual_norm <= tolerance * load_norm;
+  }
+
+
+
+  NewtonSolver::Result
+  NewtonSolver::solve(EquilibriumProblem         &problem,
+                      EquilibriumProblem::Vector &a,
+                      const double                load_factor) const
+  {
+    EquilibriumProblem::Vector residual, load, increment;
+    for (unsigned int iteration = 0;; ++iteration)
+      {
+        problem.assemble(a, load_factor, residual, load, true);
+        const double norm      = residual.l2_norm();
+        const double load_norm = std::abs(load_factor) * load.l2_norm();
+        if (!std::isfinite(norm))
+          throw StepFailure("the residual is not finite");
+        if (getenv("SOFTOPT_DEBUG_NEWTON"))
+          std::cout << "      it " << iteration << " |r| " << norm << " |lP| " << load_norm << std::endl;
+        if (converged(norm, load_norm) || norm == 0.)
+          return {iteration, norm};
+
+        std::ostringstream reason;
+        if (iteration == max_iterations)
+          reason << "Newton did not converge in " << max_iterations
+                 << " iterations (|r| = " << norm
+                 << " N, |lambda P| = " << load_norm << " N)";
+        if (!reason.str().empty())
+          throw StepFailure(reason.str());
+
+        problem.factorize();
+        residual *= -1.;
+        problem.solve(residual, increment);
+        problem.update(a, increment);
+      }
+  }
+} // namespace softopt

@@ -1,0 +1,128 @@
+#include <deal.II/base/exceptions.h>
+
+#include <softopt/base/step_failure.h>
+#include <softopt/solvers/direct_solver.h>
+
+#include <petscpc.h>
+
+#include <string>
+
+namespace softopt
+{
+  namespace
+  {
+    void
+    check(const PetscErrorCode code, const char *call)
+    {
+      AssertThrow(code == 0,
+                  ExcMessage(std::string("PETSc call ") + call +
+                             " failed with error code " +
+                             std::to_string(code) + "."));
+    }
+  } // namespace
+
+
+
+  DirectSolver::DirectSolver(const MPI_Comm comm)
+    : comm(comm)
+  {}
+
+
+
+  DirectSolver::~DirectSolver()
+  {
+    if (ksp != nullptr)
+      KSPDestroy(&ksp);
+  }
+
+
+
+  void
+  DirectSolver::factorize(const PETScWrappers::MPI::SparseMatrix &matrix)
+  {
+    const Mat A = static_cast<Mat>(matrix);
+    // The tangent is symmetric (Eq. LinMat and the closed-cavity follower
+    // load): MUMPS reads the upper triangle and factors LDL^T (SYM = 2).
+    check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+
+    if (ksp == nullptr || A != analyzed_matrix)
+      {
+        if (ksp != nullptr)
+          KSPDestroy(&ksp);
+        check(KSPCreate(comm, &ksp), "KSPCreate");
+        check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+        PC pc;
+        check(KSPGetPC(ksp, &pc), "KSPGetPC");
+        check(PCSetType(pc, PCCHOLESKY), "PCSetType");
+        check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS),
+              "PCFactorSetMatSolverType");
+        check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
+        check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
+        Mat F;
+        check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+        // Working space: 50% above MUMPS' estimate; pivoting on the
+        // indefinite tangents past limit points needs more than the default.
+        check(MatMumpsSetIcntl(F, 14, 50), "MatMumpsSetIcntl");
+        analyzed_matrix = A;
+      }
+    else
+      check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
+
+    check(KSPSetUp(ksp), "KSPSetUp");
+    ++factorizations;
+
+    PC  pc;
+    Mat F;
+    check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    PetscInt info = 0, info2 = 0;
+    check(MatMumpsGetInfog(F, 1, &info), "MatMumpsGetInfog");
+    check(MatMumpsGetInfog(F, 2, &info2), "MatMumpsGetInfog");
+    if (info < 0)
+      throw StepFailure("the MUMPS factorization failed with INFOG(1) = " +
+                        std::to_string(info) +
+                        ", INFOG(2) = " + std::to_string(info2) +
+                        (info == -10 ? " (the tangent is singular)" : "") +
+                        (info == -9 || info == -8 ?
+                           " (MUMPS ran out of working space)" :
+                           ""));
+  }
+
+
+
+  void
+  DirectSolver::solve(const PETScWrappers::MPI::Vector &b,
+                      PETScWrappers::MPI::Vector       &x) const
+  {
+    Assert(ksp != nullptr, ExcMessage("solve() before factorize()"));
+    check(KSPSolve(ksp, b, x), "KSPSolve");
+    KSPConvergedReason reason;
+    check(KSPGetConvergedReason(ksp, &reason), "KSPGetConvergedReason");
+    if (reason < 0)
+      throw StepFailure("the solve with the MUMPS factorization failed "
+                        "(PETSc KSPConvergedReason " +
+                        std::to_string(static_cast<int>(reason)) + ").");
+  }
+
+
+
+  unsigned int
+  DirectSolver::n_negative_pivots() const
+  {
+    PC  pc;
+    Mat F;
+    check(KSPGetPC(ksp, &pc), "KSPGetPC");
+    check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    PetscInt n = 0;
+    check(MatMumpsGetInfog(F, 12, &n), "MatMumpsGetInfog");
+    return n;
+  }
+
+
+
+  unsigned int
+  DirectSolver::n_factorizations() const
+  {
+    return factorizations;
+  }
+} // namespace softopt

@@ -1,0 +1,78 @@
+// The neo-Hookean mixed material: the stress P = dW~/dF and the tangent
+// A = dP/dF against central finite differences, and dW~/dp~ against the
+// pressure equation, at a few deformations with J far from and close to 1.
+
+#include <softopt/physics/neo_hookean_mixed.h>
+
+#include "tests.h"
+
+using namespace softopt_tests;
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  TestLog                          log;
+
+  const softopt::NeoHookeanMixed material(1.2, 0.49);
+  for (unsigned int sample = 0; sample < 4; ++sample)
+    {
+      Tensor<2, 3> F;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          F[i][j] = (i == j ? 1. : 0.) + 0.3 * (sample + 1) / 4. *
+                                           random(3 * i + j, sample);
+      const double p = 0.1 * random(100, sample);
+      const double h = 1e-6;
+
+      double P_error = 0, P_norm = 0, A_error = 0, A_norm = 0;
+      const Tensor<2, 3> P = material.first_piola(F, p);
+      const Tensor<4, 3> A = material.tangent(F, p);
+      for (unsigned int k = 0; k < 3; ++k)
+        for (unsigned int l = 0; l < 3; ++l)
+          {
+            Tensor<2, 3> dF;
+            dF[k][l] = h;
+            const double dW = (material.energy(F + dF, p) -
+                               material.energy(F - dF, p)) / (2 * h);
+            P_error = std::max(P_error, std::abs(dW - P[k][l]));
+            P_norm  = std::max(P_norm, std::abs(P[k][l]));
+            const Tensor<2, 3> dP = (material.first_piola(F + dF, p) -
+                                     material.first_piola(F - dF, p)) / (2 * h);
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                {
+                  A_error = std::max(A_error, std::abs(dP[i][j] - A[i][j][k][l]));
+                  A_norm  = std::max(A_norm, std::abs(A[i][j][k][l]));
+                }
+          }
+      // dW~/dp~ = -(J - 1) - p~/K, and dP/dp~ = -J F^{-T}.
+      const double dWdp = (material.energy(F, p + h) - material.energy(F, p - h)) /
+                          (2 * h);
+      const double J = determinant(F);
+      const double pressure_error =
+        std::abs(dWdp - (-(J - 1.) - p / material.bulk_modulus));
+      const Tensor<2, 3> dPdp = (material.first_piola(F, p + h) -
+                                 material.first_piola(F, p - h)) / (2 * h);
+      const double coupling_error =
+        (dPdp - material.pressure_coupling(F)).norm() / dPdp.norm();
+
+      deallog << "J = " << J << ": relative error of P " << error(P_error / P_norm)
+              << ", of A " << error(A_error / A_norm) << ", of dW/dp "
+              << error(pressure_error) << ", of dP/dp " << error(coupling_error)
+              << std::endl;
+    }
+
+  // At small strain the law reduces to Hooke's, sigma = 2G eps + lambda
+  // tr(eps) I, with p~ = -K tr(eps) from the pressure equation.
+  const double eps = 1e-7;
+  Tensor<2, 3> F   = unit_symmetric_tensor<3>();
+  F[0][0] += eps;
+  const double       p     = -material.bulk_modulus * eps;
+  const Tensor<2, 3> sigma = material.cauchy_stress(F, p);
+  const double lame = material.bulk_modulus - 2. / 3. * material.shear_modulus;
+  deallog << "uniaxial strain: sigma_xx / eps = " << sigma[0][0] / eps
+          << " (expected " << 2 * material.shear_modulus + lame
+          << "), sigma_yy / eps = " << sigma[1][1] / eps << " (expected "
+          << lame << ")" << std::endl;
+}

@@ -1,0 +1,84 @@
+// Shared helpers for softopt's tests (deal.II style: a test writes to the
+// file "output" through deallog; numdiff compares it with foo.output).
+#ifndef softopt_tests_h
+#define softopt_tests_h
+
+#include <deal.II/base/logstream.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/tria.h>
+
+#include <softopt/geometry/geometry.h>
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace softopt_tests
+{
+  using namespace dealii;
+
+  /** deallog into the file "output", on rank 0 only. */
+  class TestLog
+  {
+  public:
+    TestLog()
+    {
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+        {
+          file.open("output");
+          deallog.attach(file, false);
+        }
+      deallog.depth_console(0);
+      deallog << std::setprecision(8);
+    }
+    ~TestLog()
+    {
+      if (file.is_open())
+        deallog.detach();
+    }
+
+  private:
+    std::ofstream file;
+  };
+
+  /** A number with two significant digits (for errors that must be small). */
+  inline std::string
+  error(const double e)
+  {
+    std::ostringstream s;
+    s << std::scientific << std::setprecision(1) << e;
+    return s.str();
+  }
+
+  /** A deterministic pseudo-random number in [-1, 1] for index i, the same
+   * on any number of MPI ranks. */
+  inline double
+  random(const unsigned long i, const unsigned int seed = 1)
+  {
+    const double x = std::sin(12.9898 * (i + 1) + 78.233 * seed) * 43758.5453;
+    return 2. * (x - std::floor(x)) - 1.;
+  }
+
+  /**
+   * The unit cube cut into tetrahedra, distributed: boundary ids 0 at x = 0,
+   * 1 at x = 1, 2 elsewhere.
+   */
+  inline void
+  make_cube(parallel::fullydistributed::Triangulation<3> &triangulation,
+            const unsigned int                            subdivisions = 2)
+  {
+    Triangulation<3> serial;
+    GridGenerator::subdivided_hyper_cube_with_simplices(serial, subdivisions);
+    for (const auto &face : serial.active_face_iterators())
+      if (face->at_boundary())
+        face->set_boundary_id(face->center()[0] < 1e-12       ? 0 :
+                              face->center()[0] > 1. - 1e-12 ? 1 :
+                                                                2);
+    softopt::Geometry::distribute(serial, triangulation);
+  }
+} // namespace softopt_tests
+
+#endif
