@@ -4,11 +4,13 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
 
 #include <softopt/app/analysis.h>
 #include <softopt/app/settings.h>
 
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -90,9 +92,10 @@ main(int argc, char **argv)
     {
       if (root)
         {
-          std::cerr << "\nsoftopt: error: ";
-          e.print_info(std::cerr);
-          std::cerr << std::endl;
+          std::ostringstream message;
+          e.print_info(message);
+          std::cerr << "\nsoftopt: error: "
+                    << dealii::Utilities::trim(message.str()) << std::endl;
         }
     }
   catch (const std::exception &e)

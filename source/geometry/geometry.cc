@@ -7,7 +7,9 @@
 
 #include <softopt/geometry/geometry.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <map>
 #include <fstream>
 #include <sstream>
 
@@ -182,7 +184,64 @@ namespace softopt
     for (const auto id : design_boundary_ids)
       check(id, where_design);
 
+    check_cavity_is_closed(serial);
     distribute(serial, triangulation);
+  }
+
+
+
+  void
+  Geometry::check_cavity_is_closed(const Triangulation<3> &serial) const
+  {
+    // The follower pressure is conservative, with a symmetric load stiffness,
+    // only on a closed surface (Eq. LinMat): every edge of the pressure
+    // boundary must belong to two of its faces, or lie on a coordinate plane
+    // through the origin that a Dirichlet condition makes a symmetry plane.
+    std::map<unsigned int, std::pair<unsigned int, Triangulation<3>::line_iterator>>
+      faces_per_line;
+    for (const auto &cell : serial.active_cell_iterators())
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            std::find(pressure_boundary_ids.begin(),
+                      pressure_boundary_ids.end(),
+                      cell->face(f)->boundary_id()) !=
+              pressure_boundary_ids.end())
+          for (unsigned int l = 0; l < cell->face(f)->n_lines(); ++l)
+            {
+              auto &entry = faces_per_line[cell->face(f)->line(l)->index()];
+              ++entry.first;
+              entry.second = cell->face(f)->line(l);
+            }
+
+    std::array<bool, 3> symmetry_plane{{false, false, false}};
+    for (const auto &[id, fixed] : dirichlet_boundaries)
+      for (unsigned int d = 0; d < 3; ++d)
+        symmetry_plane[d] |= fixed[d];
+    const double tolerance = 1e-8 * GridTools::diameter(serial);
+
+    unsigned int open_edges = 0;
+    Point<3>     example;
+    for (const auto &[index, entry] : faces_per_line)
+      {
+        const auto &[count, line] = entry;
+        if (count != 1)
+          continue;
+        bool on_symmetry_plane = false;
+        for (unsigned int d = 0; d < 3; ++d)
+          on_symmetry_plane |= symmetry_plane[d] &&
+                               std::abs(line->vertex(0)[d]) < tolerance &&
+                               std::abs(line->vertex(1)[d]) < tolerance;
+        if (!on_symmetry_plane && open_edges++ == 0)
+          example = line->center();
+      }
+    std::ostringstream message;
+    message << where_pressure << ": the pressure boundary is not a closed "
+            << "cavity: " << open_edges << " of its edges border on "
+            << "other boundaries (one at " << example << "). The follower "
+            << "pressure needs the walls of a closed cavity, or of one cut "
+            << "by symmetry planes through the origin (x = 0, y = 0 or "
+            << "z = 0 with that displacement component fixed).";
+    AssertThrow(open_edges == 0, ExcMessage(message.str()));
   }
 
 

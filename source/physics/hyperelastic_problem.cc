@@ -1,4 +1,5 @@
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/fe/fe_values.h>
@@ -132,6 +133,7 @@ namespace softopt
                                 Vector       &load,
                                 const bool    with_tangent)
   {
+    Timer        timer;
     const Vector a_ghost = ghosted(a);
     residual.reinit(locally_owned_dofs, triangulation_comm);
     load.reinit(locally_owned_dofs, triangulation_comm);
@@ -323,6 +325,8 @@ namespace softopt
     if (with_tangent)
       system_matrix.compress(VectorOperation::add);
 
+    ++statistics.n_assemblies;
+    statistics.assembly_time += timer.wall_time();
     if (Utilities::MPI::logical_or(inverted, triangulation_comm))
       throw StepFailure("an element is inverted (J <= 0 at a quadrature "
                         "point)");
@@ -333,7 +337,11 @@ namespace softopt
   void
   HyperelasticProblem::factorize()
   {
+    Timer timer;
     direct_solver.factorize(system_matrix);
+    ++statistics.n_factorizations;
+    if (getenv("SOFTOPT_DEBUG_TIMES")) std::cout << "      factorization " << timer.wall_time() << " s" << std::endl;
+    statistics.factorization_time += timer.wall_time();
   }
 
 
@@ -341,8 +349,11 @@ namespace softopt
   void
   HyperelasticProblem::solve(const Vector &b, Vector &x) const
   {
+    Timer timer;
     x.reinit(locally_owned_dofs, triangulation_comm);
     direct_solver.solve(b, x);
+    ++statistics.n_solves;
+    statistics.solve_time += timer.wall_time();
     // The constrained entries are zero already (identity rows, zero right
     // hand side); distribute() keeps that exact.
     constraints.set_zero(x);
@@ -613,6 +624,12 @@ namespace softopt
   HyperelasticProblem::get_constraints() const
   {
     return constraints;
+  }
+
+  const HyperelasticProblem::Statistics &
+  HyperelasticProblem::get_statistics() const
+  {
+    return statistics;
   }
 
   MPI_Comm

@@ -65,6 +65,11 @@ namespace softopt
     std::string
     mesh_with_gmsh(const MPI_Comm comm) const;
 
+    /** Throws unless the pressure boundary closes a cavity (up to symmetry
+     * planes through the origin). */
+    void
+    check_cavity_is_closed(const Triangulation<3> &serial) const;
+
     /** Where each boundary role came from, for messages. */
     std::string where_dirichlet, where_pressure, where_design, where_mesh;
   };

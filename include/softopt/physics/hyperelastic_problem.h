@@ -150,6 +150,21 @@ namespace softopt
     MPI_Comm
     get_communicator() const;
 
+    /** Calls and wall time of the expensive phases, for progress reports
+     * and benchmarks. */
+    struct Statistics
+    {
+      unsigned int n_assemblies      = 0;
+      unsigned int n_factorizations  = 0;
+      unsigned int n_solves          = 0;
+      double       assembly_time      = 0;
+      double       factorization_time = 0;
+      double       solve_time         = 0;
+    };
+
+    const Statistics &
+    get_statistics() const;
+
   private:
     MPI_Comm                triangulation_comm;
     const Triangulation<3> &triangulation;
@@ -174,6 +189,8 @@ namespace softopt
 
     PETScWrappers::MPI::SparseMatrix system_matrix;
     DirectSolver                     direct_solver;
+
+    mutable Statistics statistics;
   };
 } // namespace softopt
 

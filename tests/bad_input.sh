@@ -1,0 +1,42 @@
+#!/bin/bash
+# Bad input: every tests/bad_input/*.prm must make softopt exit non-zero with
+# a message containing the text after "# expect: " on its first line, and
+# must leave the results already in the output directory untouched.
+# A run that fails along the load path keeps a valid load_path.csv up to the
+# last converged step.
+# Usage: bad_input.sh SOFTOPT_EXECUTABLE BAD_INPUT_FOLDER
+softopt=$1
+folder=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+
+failures=0
+for prm in "$folder"/*.prm; do
+  name=$(basename "$prm" .prm)
+  expect=$(head -n 1 "$prm" | sed 's/^# expect: //')
+  rm -rf output && mkdir output && echo "good results" > output/load_path.csv
+  message=$("$softopt" "$prm" 2>&1)
+  code=$?
+  if [ $code -eq 0 ]; then
+    echo "FAIL $name: exit code 0"; failures=$((failures + 1))
+  elif ! grep -qF -- "$expect" <<< "$message"; then
+    echo "FAIL $name: the message does not contain \"$expect\":"
+    echo "$message"; failures=$((failures + 1))
+  elif [ "$(cat output/load_path.csv)" != "good results" ]; then
+    echo "FAIL $name: overwrote earlier results"; failures=$((failures + 1))
+  else
+    echo "ok   $name (exit code $code)"
+  fi
+done
+
+# The diverging run: load_path.csv holds its header and the converged rows.
+csv=results-divergence/load_path.csv
+if [ ! -f $csv ] || ! head -n 1 $csv | grep -q '^step,load_factor' ||
+   [ "$(tail -n 1 $csv | cut -d, -f1)" = "step" ]; then
+  echo "FAIL divergence: $csv is missing or holds no converged row"
+  failures=$((failures + 1))
+else
+  echo "ok   divergence keeps $(($(wc -l < $csv) - 1)) converged rows in load_path.csv"
+fi
+exit $failures
