@@ -1,8 +1,6 @@
 #include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/fully_distributed_tria.h>
-#include <deal.II/fe/fe_simplex_p.h>
-#include <deal.II/fe/mapping_fe.h>
 
 #include <softopt/app/analysis.h>
 #include <softopt/app/output_directory.h>
@@ -10,6 +8,7 @@
 #include <softopt/io/csv_writer.h>
 #include <softopt/io/pvd_series.h>
 #include <softopt/physics/hyperelastic_problem.h>
+#include <softopt/shape/design_configuration.h>
 
 
 namespace softopt
@@ -48,11 +47,11 @@ namespace softopt
 
     parallel::fullydistributed::Triangulation<3> triangulation(comm);
     settings.geometry.create_triangulation(triangulation);
-    const MappingFE<3>    mapping(FE_SimplexP<3>(1));
+    const DesignConfiguration design(triangulation, settings.geometry);
     const NeoHookeanMixed material(settings.material.youngs_modulus,
                                    settings.material.poissons_ratio);
     HyperelasticProblem   problem(triangulation,
-                                mapping,
+                                design.get_mapping(),
                                 settings.geometry,
                                 material,
                                 settings.loading.pressure_kPa * 1e-3);

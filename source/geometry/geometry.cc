@@ -1,11 +1,14 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/grid/tria_description.h>
 
 #include <softopt/geometry/geometry.h>
+#include <softopt/geometry/gmsh_mesh.h>
 
 #include <algorithm>
 #include <filesystem>
@@ -95,7 +98,9 @@ namespace softopt
   std::string
   Geometry::mesh_with_gmsh(const MPI_Comm comm) const
   {
-    // Rank 0 meshes into a temporary file; every rank then reads it.
+    // Rank 0 writes gmsh's format 2.2 into a temporary file: a .geo meshed
+    // with quadratic tetrahedra (midside nodes on the CAD surfaces), a .msh
+    // converted as it is. Every rank then reads that file.
     std::string msh_file;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
@@ -104,10 +109,14 @@ namespace softopt
                           std::filesystem::path(mesh_file).stem().string());
         msh_file              = tmp.string() + ".msh";
         const std::string log = tmp.string() + ".log";
+        const bool geo = std::filesystem::path(mesh_file).extension() == ".geo";
         std::ostringstream command;
-        command << "gmsh -3 -order 1 -format msh22 -v 3 -setnumber h "
-                << mesh_size << " \"" << mesh_file << "\" -o \"" << msh_file
-                << "\" > \"" << log << "\" 2>&1";
+        command << "gmsh " << (geo ? "-3 -order 2 " : "-0 ")
+                << "-format msh22 -v 3 ";
+        if (geo)
+          command << "-setnumber h " << mesh_size << " ";
+        command << "\"" << mesh_file << "\" -o \"" << msh_file << "\" > \""
+                << log << "\" 2>&1";
         const int status = std::system(command.str().c_str());
         std::ifstream     log_in(log);
         std::stringstream log_text;
@@ -127,39 +136,41 @@ namespace softopt
 
   void
   Geometry::create_triangulation(
-    parallel::fullydistributed::Triangulation<3> &triangulation) const
+    parallel::fullydistributed::Triangulation<3> &triangulation)
   {
-    const MPI_Comm comm = triangulation.get_communicator();
-    const bool     from_geo =
-      std::filesystem::path(mesh_file).extension() == ".geo";
-    const std::string msh_file = from_geo ? mesh_with_gmsh(comm) : mesh_file;
+    const MPI_Comm     comm     = triangulation.get_communicator();
+    const std::string  msh_file = mesh_with_gmsh(comm);
+    const unsigned int rank     = Utilities::MPI::this_mpi_process(comm);
+    const std::string  linear_file =
+      msh_file + ".linear" + std::to_string(rank) + ".msh";
 
     Triangulation<3> serial;
+    std::string      error;
     try
       {
-        GridIn<3> grid_in(serial);
-        std::ifstream in(msh_file);
+        edge_midpoints = split_quadratic_gmsh_mesh(msh_file, linear_file);
+        GridIn<3>     grid_in(serial);
+        std::ifstream in(linear_file);
         grid_in.read_msh(in);
+      }
+    catch (const ExceptionBase &e)
+      {
+        std::ostringstream message;
+        e.print_info(message);
+        error = Utilities::trim(message.str());
       }
     catch (const std::exception &e)
       {
-        if (from_geo && Utilities::MPI::this_mpi_process(comm) == 0)
-          std::filesystem::remove(msh_file);
-        AssertThrow(false,
-                    ExcMessage(where_mesh + ": deal.II cannot read the mesh <" +
-                               msh_file + ">:\n" + e.what()));
+        error = e.what();
       }
-    if (from_geo)
-      {
-        MPI_Barrier(comm);
-        if (Utilities::MPI::this_mpi_process(comm) == 0)
-          std::filesystem::remove(msh_file);
-      }
+    std::filesystem::remove(linear_file);
+    MPI_Barrier(comm);
+    if (rank == 0)
+      std::filesystem::remove(msh_file);
+    AssertThrow(error.empty(),
+                ExcMessage(where_mesh + ": cannot read the mesh <" + mesh_file +
+                           ">: " + error));
 
-    AssertThrow(serial.n_active_cells() > 0,
-                ExcMessage(where_mesh + ": the mesh has no cells (a gmsh file "
-                                        "without a Physical Volume holds no "
-                                        "tetrahedra)."));
     for (const auto &cell : serial.active_cell_iterators())
       AssertThrow(cell->reference_cell() == ReferenceCells::Tetrahedron,
                   ExcMessage(where_mesh + ": softopt needs a mesh of "
@@ -242,6 +253,34 @@ namespace softopt
             << "by symmetry planes through the origin (x = 0, y = 0 or "
             << "z = 0 with that displacement component fixed).";
     AssertThrow(open_edges == 0, ExcMessage(message.str()));
+  }
+
+
+
+  void
+  Geometry::initial_coordinates(const DoFHandler<3>        &dof_handler,
+                                PETScWrappers::MPI::Vector &coordinates) const
+  {
+    // Vertex DoFs of FE_SimplexP(2) come first, then one DoF per line.
+    const FiniteElement<3> &fe = dof_handler.get_fe();
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          cell->get_dof_indices(dof_indices);
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            {
+              const auto [component, base] = fe.system_to_component_index(i);
+              if (!coordinates.in_local_range(dof_indices[i]))
+                continue;
+              const Point<3> X =
+                base < 4 ? cell->vertex(base) :
+                           edge_midpoints(cell->line(base - 4)->vertex(0),
+                                          cell->line(base - 4)->vertex(1));
+              coordinates(dof_indices[i]) = X[component];
+            }
+        }
+    coordinates.compress(VectorOperation::insert);
   }
 
 

@@ -2,7 +2,6 @@
 #include <softopt/path/newton_solver.h>
 
 #include <cmath>
-#include <iostream>
 #include <sstream>
 
 namespace softopt
@@ -53,6 +52,7 @@ namespace softopt
                       const double                load_factor) const
   {
     EquilibriumProblem::Vector residual, load, increment;
+    double                     previous_norm = 0, first_update_norm = 0;
     for (unsigned int iteration = 0;; ++iteration)
       {
         problem.assemble(a, load_factor, residual, load, true);
@@ -60,16 +60,24 @@ namespace softopt
         const double load_norm = std::abs(load_factor) * load.l2_norm();
         if (!std::isfinite(norm))
           throw StepFailure("the residual is not finite");
-        if (getenv("SOFTOPT_DEBUG_NEWTON"))
-          std::cout << "      it " << iteration << " |r| " << norm << " |lP| " << load_norm << std::endl;
         if (converged(norm, load_norm) || norm == 0.)
           return {iteration, norm};
 
+        // The first update of a nearly incompressible body may raise |r| by
+        // orders of magnitude; a residual that still grows after that is a
+        // step too large, and is cut back early rather than iterated on.
+        if (iteration == 1)
+          first_update_norm = norm;
         std::ostringstream reason;
         if (iteration == max_iterations)
           reason << "Newton did not converge in " << max_iterations
                  << " iterations (|r| = " << norm
                  << " N, |lambda P| = " << load_norm << " N)";
+        else if (iteration >= 3 && norm > previous_norm &&
+                 norm > first_update_norm)
+          reason << "Newton diverges (|r| = " << norm << " N after "
+                 << iteration << " iterations)";
+        previous_norm = norm;
         if (!reason.str().empty())
           throw StepFailure(reason.str());
 

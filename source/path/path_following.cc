@@ -25,9 +25,13 @@ namespace softopt
                       "last one ends the path); dimensionless, pressure = "
                       "load factor x Pressure.");
     prm.declare_entry("Initial load increment",
-                      "0.25",
+                      "1",
                       Patterns::Double(1e-12, 1),
-                      "The first load factor increment.");
+                      "The first load factor increment (halved until Newton "
+                      "converges). Without a limit point the equilibrium at a "
+                      "target does not depend on the path, so one large "
+                      "step is cheapest; smaller maximum increments give "
+                      "more rows in load_path.csv.");
     prm.declare_entry("Minimum load increment",
                       "1e-4",
                       Patterns::Double(1e-14, 1),

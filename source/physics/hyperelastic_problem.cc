@@ -104,6 +104,11 @@ namespace softopt
                          locally_owned_dofs,
                          dsp,
                          triangulation_comm);
+    // An entry outside the pattern is a bug: never let PETSc allocate it
+    // (that would also force a new symbolic factorization).
+    MatSetOption(system_matrix.petsc_matrix(),
+                 MAT_NEW_NONZERO_ALLOCATION_ERR,
+                 PETSC_TRUE);
   }
 
 
@@ -137,6 +142,8 @@ namespace softopt
     const Vector a_ghost = ghosted(a);
     residual.reinit(locally_owned_dofs, triangulation_comm);
     load.reinit(locally_owned_dofs, triangulation_comm);
+    for (Vec v : {static_cast<Vec>(residual), static_cast<Vec>(load)})
+      VecSetOption(v, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE);
     if (with_tangent)
       system_matrix = 0;
 
@@ -175,6 +182,7 @@ namespace softopt
     const double bulk_modulus = material.bulk_modulus;
     const double p_hat        = pressure;
     bool         inverted     = false;
+    double       diagonal_sum = 0;
 
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -310,14 +318,26 @@ namespace softopt
             }
 
         cell_residual.add(load_factor, cell_load);
+        add_to_global(with_tangent ? &cell_matrix : nullptr,
+                      {&cell_residual, &cell_load},
+                      dof_indices,
+                      {&residual, &load});
         if (with_tangent)
-          constraints.distribute_local_to_global(
-            cell_matrix, cell_residual, dof_indices, system_matrix, residual);
-        else
-          constraints.distribute_local_to_global(cell_residual,
-                                                 dof_indices,
-                                                 residual);
-        constraints.distribute_local_to_global(cell_load, dof_indices, load);
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            diagonal_sum += std::abs(cell_matrix(i, i));
+      }
+
+
+    // Constrained rows: zero residual, and a diagonal entry of the size of
+    // the others so that the factorization sees a well-scaled identity.
+    if (with_tangent)
+      {
+        const double diagonal =
+          Utilities::MPI::sum(diagonal_sum, triangulation_comm) /
+          dof_handler.n_dofs();
+        for (const auto i : locally_owned_dofs)
+          if (constraints.is_constrained(i))
+            MatSetValue(system_matrix.petsc_matrix(), i, i, diagonal, ADD_VALUES);
       }
 
     residual.compress(VectorOperation::add);
@@ -335,12 +355,64 @@ namespace softopt
 
 
   void
+  HyperelasticProblem::add_to_global(
+    const FullMatrix<double>                      *cell_matrix,
+    const std::vector<const dealii::Vector<double> *> &cell_vectors,
+    const std::vector<types::global_dof_index>    &dof_indices,
+    const std::vector<Vector *>                   &vectors)
+  {
+    // Homogeneous Dirichlet constraints only: a constrained row or column is
+    // dropped by giving it the index -1, which PETSc skips. The displacement
+    // block and the pressure diagonal go in separately: the sparsity pattern
+    // has no displacement-pressure couplings, and PETSc must not add any.
+    const unsigned int        n = dof_indices.size();
+    std::vector<PetscInt>     rows(n), u_rows;
+    std::vector<unsigned int> u_local;
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        rows[i] = constraints.is_constrained(dof_indices[i]) ?
+                    -1 :
+                    static_cast<PetscInt>(dof_indices[i]);
+        if (fe.system_to_component_index(i).first != pressure_component)
+          {
+            u_local.push_back(i);
+            u_rows.push_back(rows[i]);
+          }
+      }
+    if (cell_matrix != nullptr)
+      {
+        const unsigned int  n_u = u_local.size();
+        std::vector<double> values(n_u * n_u);
+        for (unsigned int i = 0; i < n_u; ++i)
+          for (unsigned int j = 0; j < n_u; ++j)
+            values[i * n_u + j] = (*cell_matrix)(u_local[i], u_local[j]);
+        Mat matrix = system_matrix.petsc_matrix();
+        AssertThrow(MatSetValues(matrix, n_u, u_rows.data(), n_u, u_rows.data(),
+                                 values.data(), ADD_VALUES) == 0,
+                    ExcInternalError());
+        for (unsigned int i = 0; i < n; ++i)
+          if (fe.system_to_component_index(i).first == pressure_component)
+            AssertThrow(MatSetValue(matrix, rows[i], rows[i],
+                                    (*cell_matrix)(i, i), ADD_VALUES) == 0,
+                        ExcInternalError());
+      }
+    for (unsigned int v = 0; v < vectors.size(); ++v)
+      AssertThrow(VecSetValues(static_cast<Vec>(*vectors[v]),
+                               n,
+                               rows.data(),
+                               cell_vectors[v]->data(),
+                               ADD_VALUES) == 0,
+                  ExcInternalError());
+  }
+
+
+
+  void
   HyperelasticProblem::factorize()
   {
     Timer timer;
     direct_solver.factorize(system_matrix);
     ++statistics.n_factorizations;
-    if (getenv("SOFTOPT_DEBUG_TIMES")) std::cout << "      factorization " << timer.wall_time() << " s" << std::endl;
     statistics.factorization_time += timer.wall_time();
   }
 

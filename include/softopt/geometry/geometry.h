@@ -4,7 +4,11 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/distributed/fully_distributed_tria.h>
 
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/petsc_vector.h>
+
 #include <softopt/base/input.h>
+#include <softopt/geometry/gmsh_mesh.h>
 
 #include <array>
 #include <map>
@@ -35,7 +39,17 @@ namespace softopt
      */
     void
     create_triangulation(
-      parallel::fullydistributed::Triangulation<3> &triangulation) const;
+      parallel::fullydistributed::Triangulation<3> &triangulation);
+
+    /**
+     * The initial design coordinates X_o at the DoFs of a P2 vector field on
+     * the triangulation made by create_triangulation(): vertices, and the
+     * midside nodes of gmsh's quadratic mesh, which lie on the curved CAD
+     * surfaces (straight midpoints for a linear mesh). In mm.
+     */
+    void
+    initial_coordinates(const DoFHandler<3>        &dof_handler,
+                        PETScWrappers::MPI::Vector &coordinates) const;
 
     /** The mesh file, resolved against the parameter file's folder. */
     std::string mesh_file;
@@ -61,7 +75,8 @@ namespace softopt
                parallel::fullydistributed::Triangulation<3> &triangulation);
 
   private:
-    /** Runs gmsh on the .geo file and returns the path of the .msh it wrote. */
+    /** Runs gmsh on the mesh file (meshing a .geo with quadratic tetrahedra)
+     * and returns the path of the format 2.2 .msh it wrote. */
     std::string
     mesh_with_gmsh(const MPI_Comm comm) const;
 
@@ -69,6 +84,9 @@ namespace softopt
      * planes through the origin). */
     void
     check_cavity_is_closed(const Triangulation<3> &serial) const;
+
+    /** The midside nodes of the mesh read last. */
+    EdgeMidpoints edge_midpoints;
 
     /** Where each boundary role came from, for messages. */
     std::string where_dirichlet, where_pressure, where_design, where_mesh;

@@ -77,7 +77,7 @@ namespace softopt
     /** Load factors at which a converged state is required. */
     std::vector<double> target_load_factors{1.};
 
-    double       initial_increment = 0.25;
+    double       initial_increment = 1;
     double       minimum_increment = 1e-4;
     double       maximum_increment = 1.;
     unsigned int maximum_steps     = 200;

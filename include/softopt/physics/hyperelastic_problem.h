@@ -7,6 +7,8 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
 
@@ -166,6 +168,14 @@ namespace softopt
     get_statistics() const;
 
   private:
+    /** Adds a cell's matrix (if not null) and vectors to the global ones,
+     * dropping constrained rows and columns. */
+    void
+    add_to_global(const FullMatrix<double>                          *cell_matrix,
+                  const std::vector<const dealii::Vector<double> *> &cell_vectors,
+                  const std::vector<types::global_dof_index>        &dof_indices,
+                  const std::vector<Vector *>                       &vectors);
+
     MPI_Comm                triangulation_comm;
     const Triangulation<3> &triangulation;
     const Mapping<3>       &mapping;
