@@ -63,6 +63,30 @@ main(int argc, char **argv)
               << std::endl;
     }
 
+  // J - 1 from the invariants of H keeps its digits where det(F) - 1 cannot.
+  Tensor<2, 3> H;
+  for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int j = 0; j < 3; ++j)
+      H[i][j] = 1e-7 * random(3 * i + j, 7);
+  // The reference in long double (64-bit mantissa: good to about 1e-12 of
+  // J - 1 here; det(F) - 1 in double keeps only about 1e-9).
+  long double L[3][3];
+  for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int j = 0; j < 3; ++j)
+      L[i][j] = (i == j ? 1.L : 0.L) + static_cast<long double>(H[i][j]);
+  const double exact =
+    static_cast<double>(L[0][0] * (L[1][1] * L[2][2] - L[1][2] * L[2][1]) -
+                        L[0][1] * (L[1][0] * L[2][2] - L[1][2] * L[2][0]) +
+                        L[0][2] * (L[1][0] * L[2][1] - L[1][1] * L[2][0]) - 1.L);
+  const double naive = determinant(unit_symmetric_tensor<3>() + H) - 1;
+  const auto below = [&](const double value) {
+    return std::abs(value - exact) < 1e-11 * std::abs(exact) ? "below 1e-11" :
+                                                               "above 1e-11";
+  };
+  deallog << "|H| = 1e-7: relative error of jacobian_minus_one "
+          << below(softopt::jacobian_minus_one(H)) << ", of det(F) - 1 "
+          << below(naive) << std::endl;
+
   // At small strain the law reduces to Hooke's, sigma = 2G eps + lambda
   // tr(eps) I, with p~ = -K tr(eps) from the pressure equation.
   const double eps = 1e-7;

@@ -37,6 +37,19 @@ namespace softopt
                       "Target element size in mm when meshing a .geo file "
                       "(ignored for a .msh file).");
     prm.declare_entry(
+      "Mesh parameters",
+      "",
+      Patterns::Map(Patterns::Anything(),
+                    Patterns::Double(),
+                    0,
+                    Patterns::Map::max_int_value,
+                    ";",
+                    ":"),
+      "Numbers passed to gmsh when meshing a .geo file, as \"name: value; "
+      "name: value\" (gmsh's -setnumber; the .geo declares them with "
+      "DefineConstant), for example \"r: 9; H2: 12\" for the actuator, in "
+      "mm.");
+    prm.declare_entry(
       "Dirichlet boundaries",
       "1: xyz",
       Patterns::Map(Patterns::Integer(0, 254),
@@ -71,6 +84,12 @@ namespace softopt
     where_mesh = input.where("Geometry", "Mesh file");
     mesh_file  = input.resolve(prm.get("Mesh file"));
     mesh_size  = prm.get_double("Mesh size");
+    mesh_parameters.clear();
+    for (const auto &item : Utilities::split_string_list(prm.get("Mesh parameters"), ';'))
+      {
+        const auto parts = Utilities::split_string_list(item, ':');
+        mesh_parameters[parts[0]] = Utilities::string_to_double(parts[1]);
+      }
 
     where_dirichlet      = input.where("Geometry", "Dirichlet boundaries");
     dirichlet_boundaries = parse_dirichlet_boundaries(prm.get(
@@ -114,7 +133,11 @@ namespace softopt
         command << "gmsh " << (geo ? "-3 -order 2 " : "-0 ")
                 << "-format msh22 -v 3 ";
         if (geo)
-          command << "-setnumber h " << mesh_size << " ";
+          {
+            command << "-setnumber h " << mesh_size << " ";
+            for (const auto &[name, value] : mesh_parameters)
+              command << "-setnumber " << name << " " << value << " ";
+          }
         command << "\"" << mesh_file << "\" -o \"" << msh_file << "\" > \""
                 << log << "\" 2>&1";
         const int status = std::system(command.str().c_str());

@@ -37,11 +37,35 @@ namespace softopt
 
 
 
+  NewtonSolver::Monitor::Monitor(const NewtonSolver &newton)
+    : newton(newton)
+  {}
+
+
+
   bool
-  NewtonSolver::converged(const double residual_norm,
-                          const double load_norm) const
+  NewtonSolver::Monitor::converged(const unsigned int iteration,
+                                   const double       norm,
+                                   const double       load_norm)
   {
-    return residual_norm <= tolerance * load_norm;
+    if (!std::isfinite(norm))
+      throw StepFailure("the residual is not finite");
+    if (norm <= newton.tolerance * load_norm || norm == 0.)
+      return true;
+    if (iteration == 1)
+      first_update_norm = norm;
+    std::ostringstream reason;
+    if (iteration >= newton.max_iterations)
+      reason << "Newton did not converge in " << newton.max_iterations
+             << " iterations (|r| = " << norm << " N, |lambda P| = "
+             << load_norm << " N)";
+    else if (iteration >= 3 && norm > previous_norm && norm > first_update_norm)
+      reason << "Newton diverges (|r| = " << norm << " N after " << iteration
+             << " iterations)";
+    if (!reason.str().empty())
+      throw StepFailure(reason.str());
+    previous_norm = norm;
+    return false;
   }
 
 
@@ -52,35 +76,15 @@ namespace softopt
                       const double                load_factor) const
   {
     EquilibriumProblem::Vector residual, load, increment;
-    double                     previous_norm = 0, first_update_norm = 0;
+    Monitor                    monitor(*this);
     for (unsigned int iteration = 0;; ++iteration)
       {
         problem.assemble(a, load_factor, residual, load, true);
-        const double norm      = residual.l2_norm();
-        const double load_norm = std::abs(load_factor) * load.l2_norm();
-        if (!std::isfinite(norm))
-          throw StepFailure("the residual is not finite");
-        if (converged(norm, load_norm) || norm == 0.)
+        const double norm = residual.l2_norm();
+        if (monitor.converged(iteration,
+                              norm,
+                              std::abs(load_factor) * load.l2_norm()))
           return {iteration, norm};
-
-        // The first update of a nearly incompressible body may raise |r| by
-        // orders of magnitude; a residual that still grows after that is a
-        // step too large, and is cut back early rather than iterated on.
-        if (iteration == 1)
-          first_update_norm = norm;
-        std::ostringstream reason;
-        if (iteration == max_iterations)
-          reason << "Newton did not converge in " << max_iterations
-                 << " iterations (|r| = " << norm
-                 << " N, |lambda P| = " << load_norm << " N)";
-        else if (iteration >= 3 && norm > previous_norm &&
-                 norm > first_update_norm)
-          reason << "Newton diverges (|r| = " << norm << " N after "
-                 << iteration << " iterations)";
-        previous_norm = norm;
-        if (!reason.str().empty())
-          throw StepFailure(reason.str());
-
         problem.factorize();
         residual *= -1.;
         problem.solve(residual, increment);

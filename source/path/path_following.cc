@@ -1,10 +1,12 @@
 #include <deal.II/base/exceptions.h>
 
 #include <softopt/base/step_failure.h>
+#include <softopt/path/arclength.h>
 #include <softopt/path/path_following.h>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 
 namespace softopt
@@ -18,6 +20,23 @@ namespace softopt
                       Patterns::Double(),
                       "The cavity pressure (relative to the atmosphere) at "
                       "load factor 1, in kPa.");
+    prm.declare_entry("Path following",
+                      "load control",
+                      Patterns::Selection("load control|arclength"),
+                      "load control: the load factor rises step by step, "
+                      "cheap, but stops at a limit point (a pressure "
+                      "maximum). arclength: Crisfield's spherical arclength "
+                      "method, which follows the path through limit points "
+                      "onto descending branches. The load increments below "
+                      "set the arclength through the initial linear response "
+                      "(see doc/theory.md).");
+    prm.declare_entry("Arclength load factor weight",
+                      "1",
+                      Patterns::Double(0),
+                      "The weight w of the load factor in the arclength "
+                      "constraint |Delta u|^2 + (w |u_f| Delta lambda)^2 = "
+                      "alpha^2, u_f the initial displacement per unit load "
+                      "factor (dimensionless; 0: a cylindrical constraint).");
     prm.declare_entry("Target load factors",
                       "1",
                       Patterns::List(Patterns::Double(0), 1),
@@ -60,6 +79,9 @@ namespace softopt
   {
     prm.enter_subsection("Loading");
     pressure_kPa        = prm.get_double("Pressure");
+    method = prm.get("Path following") == "arclength" ? Method::arclength :
+                                                         Method::load_control;
+    load_factor_weight  = prm.get_double("Arclength load factor weight");
     target_load_factors = parse_doubles(prm.get("Target load factors"),
                                         input.where("Loading",
                                                     "Target load factors"));
@@ -97,13 +119,23 @@ namespace softopt
     targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
     Assert(!targets.empty() && targets.front() > 0, ExcInternalError());
 
+    using Point = Arclength::Point;
     Result                     result;
-    EquilibriumProblem::Vector a = problem.create_vector();
-    EquilibriumProblem::Vector a_old = a, trial = a;
-    double       lambda = 0, last_increment = 0, increment = initial_increment;
+    Point                      current{problem.create_vector(), 0., 0, 0.};
+    Point                      previous = current;
+    bool                       has_previous = false;
+    std::unique_ptr<Arclength> arclength;
+    if (method == Method::arclength)
+      arclength = std::make_unique<Arclength>(
+        problem, newton, current.a, 0., load_factor_weight);
+    // The step size: a load increment, or its arclength.
+    const auto size_of = [&](const double load_increment) {
+      return arclength ? arclength->arclength_of(load_increment) : load_increment;
+    };
+    double       size        = size_of(initial_increment);
     unsigned int next_target = 0;
 
-    for (unsigned int step = 1;; ++step)
+    for (unsigned int step = 1; result.stop_reason.empty(); ++step)
       {
         if (step > maximum_steps)
           {
@@ -111,85 +143,112 @@ namespace softopt
                                  std::to_string(maximum_steps) + ")";
             break;
           }
-
-        // Land exactly on the next target (load control).
         const double target = targets[next_target];
-        const bool   lands  = increment >= target - lambda;
-        const double step_increment = lands ? target - lambda : increment;
 
-        // Secant predictor from the last two converged states.
-        trial = a;
-        if (last_increment > 0)
-          {
-            EquilibriumProblem::Vector secant = a;
-            secant -= a_old;
-            trial.add(step_increment / last_increment, secant);
-          }
-
-        NewtonSolver::Result newton_result;
+        // Propose the next point; a step that crosses the target is redone
+        // with load control from the last converged point, so that it lands
+        // on the target exactly.
+        Point next;
+        bool  lands = false;
         try
           {
-            newton_result =
-              newton.solve(problem, trial, lands ? target : lambda + step_increment);
+            if (arclength)
+              {
+                next = arclength->step(current,
+                                       has_previous ? &previous : nullptr,
+                                       size);
+                lands = current.load_factor < target &&
+                        next.load_factor >= target;
+                if (lands)
+                  next = load_controlled_step(problem,
+                                              newton,
+                                              current,
+                                              &next,
+                                              target);
+              }
+            else
+              {
+                lands = size >= target - current.load_factor;
+                next  = load_controlled_step(
+                  problem,
+                  newton,
+                  current,
+                  has_previous ? &previous : nullptr,
+                  lands ? target : current.load_factor + size);
+              }
           }
         catch (const StepFailure &failure)
           {
-            increment = step_increment / 2;
-            log << "    step " << step << " failed at load factor "
-                << lambda + step_increment << ": " << failure.what()
-                << "; cutting the increment to " << increment << std::endl;
+            size /= 2;
+            log << "    step " << step << " failed from load factor "
+                << current.load_factor << ": " << failure.what()
+                << "; halving the step" << std::endl;
             --step;
-            if (increment < minimum_increment)
+            if (size < size_of(minimum_increment))
               {
                 std::ostringstream reason;
                 reason << "the load step could not be solved above load "
-                       << "factor " << lambda << " (the last converged one) "
-                       << "even with the minimum increment "
-                       << minimum_increment << ": " << failure.what();
+                       << "factor " << current.load_factor
+                       << " (the last converged one) even with the minimum "
+                       << (arclength ? "arclength" : "load increment")
+                       << ": " << failure.what();
                 result.stop_reason = reason.str();
                 result.failed      = true;
-                break;
               }
             continue;
           }
 
-        a_old = a;
-        a     = trial;
-        last_increment = step_increment;
-        lambda         = lands ? target : lambda + step_increment;
+        // Grow the step when Newton converges fast, shrink it when not; a
+        // step shortened to land on a target does not shrink the next one.
+        if (next.iterations <= 3)
+          size = std::min(size_of(maximum_increment), 1.5 * size);
+        else if (next.iterations >= 7)
+          size = std::max(size_of(minimum_increment), 0.7 * size);
 
-        // Grow the increment when Newton converges fast, shrink it when not.
-        const double desired = lands ? std::max(increment, step_increment) :
-                                       step_increment;
-        if (newton_result.iterations <= 3)
-          increment = std::min(maximum_increment, 1.5 * desired);
-        else if (newton_result.iterations >= 7)
-          increment = std::max(minimum_increment, 0.7 * desired);
-        else
-          increment = desired;
-
-        result.last = {step,
-                       lambda,
-                       newton_result.iterations,
-                       newton_result.residual_norm,
+        previous     = std::move(current);
+        current      = std::move(next);
+        has_previous = true;
+        result.last  = {step,
+                       current.load_factor,
+                       current.iterations,
+                       current.residual_norm,
                        lands};
         if (lands)
           {
-            result.target_load_factors.push_back(lambda);
-            result.target_states.push_back(a);
+            result.target_load_factors.push_back(current.load_factor);
+            result.target_states.push_back(current.a);
           }
-        const std::string stop = observer(result.last, a);
-        if (!stop.empty())
-          {
-            result.stop_reason = stop;
-            break;
-          }
-        if (lands && ++next_target == targets.size())
-          {
-            result.stop_reason = "reached the last target load factor";
-            break;
-          }
+        result.stop_reason = observer(result.last, current.a);
+        if (result.stop_reason.empty() && lands &&
+            ++next_target == targets.size())
+          result.stop_reason = "reached the last target load factor";
       }
     return result;
+  }
+
+
+
+  Arclength::Point
+  PathFollowing::load_controlled_step(EquilibriumProblem      &problem,
+                                      const NewtonSolver      &newton,
+                                      const Arclength::Point  &current,
+                                      const Arclength::Point  *guide,
+                                      const double             load_factor)
+  {
+    // Predictor: the line through the last converged point and @p guide
+    // (the previous point, or an arclength step past the target).
+    Arclength::Point next{current.a, load_factor, 0, 0.};
+    if (guide != nullptr && guide->load_factor != current.load_factor)
+      {
+        Arclength::Vector direction = guide->a;
+        direction -= current.a;
+        next.a.add((load_factor - current.load_factor) /
+                     (guide->load_factor - current.load_factor),
+                   direction);
+      }
+    const auto result  = newton.solve(problem, next.a, load_factor);
+    next.iterations    = result.iterations;
+    next.residual_norm = result.residual_norm;
+    return next;
   }
 } // namespace softopt

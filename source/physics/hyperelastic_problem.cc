@@ -58,6 +58,8 @@ namespace softopt
     dof_handler.distribute_dofs(fe);
     locally_owned_dofs = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, locally_relevant_dofs);
+    pressure_dofs = DoFTools::extract_dofs(dof_handler,
+                                           ComponentMask({false, false, false, true}));
 
     // Zero displacement components on the Dirichlet boundaries. The face's
     // own DoF list decides which DoFs lie on it (FE_SimplexP's
@@ -201,14 +203,14 @@ namespace softopt
         for (unsigned int q = 0; q < n_q; ++q)
           {
             const Tensor<2, 3> F   = unit_symmetric_tensor<3>() + grad_u[q];
-            const double       J   = determinant(F);
-            const double       JxW = fe_values.JxW(q);
-            inverted |= !(J > 0);
+            const double J_minus_1 = jacobian_minus_one(grad_u[q]);
+            const double JxW       = fe_values.JxW(q);
+            inverted |= !(J_minus_1 > -1.);
             if (inverted)
               break;
             volume += JxW;
             // r_p = int (p - p~)/K dV with p = -K (J - 1) (Eq. res)
-            r_p += (-(J - 1.) - p_tilde / bulk_modulus) * JxW;
+            r_p += (-J_minus_1 - p_tilde / bulk_modulus) * JxW;
 
             const Tensor<2, 3> P        = material.first_piola(F, p_tilde);
             const Tensor<2, 3> coupling = material.pressure_coupling(F);
@@ -468,6 +470,16 @@ namespace softopt
 
 
 
+  void
+  HyperelasticProblem::zero_condensed(Vector &v) const
+  {
+    for (const auto i : pressure_dofs)
+      v(i) = 0;
+    v.compress(VectorOperation::insert);
+  }
+
+
+
   const PETScWrappers::MPI::SparseMatrix &
   HyperelasticProblem::tangent() const
   {
@@ -493,9 +505,7 @@ namespace softopt
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             {
               volume += fe_values.JxW(q);
-              dilatation +=
-                (determinant(unit_symmetric_tensor<3>() + grad_u[q]) - 1.) *
-                fe_values.JxW(q);
+              dilatation += jacobian_minus_one(grad_u[q]) * fe_values.JxW(q);
             }
           cell->get_dof_indices(dof_indices);
           for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)

@@ -57,6 +57,9 @@ namespace softopt
     /** Target element size in mm when meshing a .geo file. */
     double mesh_size = 2.0;
 
+    /** Further numbers for gmsh (-setnumber name value) when meshing a .geo. */
+    std::map<std::string, double> mesh_parameters;
+
     /** Fixed displacement components on each Dirichlet boundary id. */
     std::map<types::boundary_id, std::array<bool, 3>> dirichlet_boundaries;
 

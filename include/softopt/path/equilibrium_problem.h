@@ -54,6 +54,11 @@ namespace softopt
     virtual void
     update(Vector &a, const Vector &da) const = 0;
 
+    /** Zeroes the condensed unknowns of @p v, leaving the retained ones
+     * (the unknowns that enter the arclength constraint). */
+    virtual void
+    zero_condensed(Vector &v) const = 0;
+
     /** Negative pivots of the last factorization (the sign of det K). */
     virtual unsigned int
     n_negative_pivots() const = 0;

@@ -10,8 +10,8 @@ namespace softopt
 {
   /**
    * Newton's method for r_a(a, lambda) = 0 at a fixed load factor (load
-   * control), and the convergence test that arclength shares (subsection
-   * "Newton").
+   * control), and the convergence and failure tests that arclength shares
+   * (subsection "Newton").
    */
   class NewtonSolver
   {
@@ -30,18 +30,39 @@ namespace softopt
     };
 
     /**
-     * Solves r_a(a, lambda) = 0 starting from @p a. On return the tangent
-     * at the converged state is assembled (not yet factorized). Throws
+     * Watches one sequence of Newton iterations: says when it has converged
+     * (|r| <= tolerance |lambda P|), and throws StepFailure when it will not
+     * (a NaN, too many iterations, a residual that still grows after the
+     * third iteration: the first update of a nearly incompressible body may
+     * raise |r| by orders of magnitude, later growth means the step is too
+     * large).
+     */
+    class Monitor
+    {
+    public:
+      explicit Monitor(const NewtonSolver &newton);
+
+      /** Called with the residual of each iterate, from iteration 0. */
+      bool
+      converged(const unsigned int iteration,
+                const double       residual_norm,
+                const double       load_norm);
+
+    private:
+      const NewtonSolver &newton;
+      double              previous_norm     = 0;
+      double              first_update_norm = 0;
+    };
+
+    /**
+     * Solves r_a(a, lambda) = 0 starting from @p a. On return the tangent at
+     * the converged state is assembled (not yet factorized). Throws
      * StepFailure when the iteration does not converge.
      */
     Result
-    solve(EquilibriumProblem &problem,
+    solve(EquilibriumProblem         &problem,
           EquilibriumProblem::Vector &a,
           const double                load_factor) const;
-
-    /** Is |r| small against the external load |lambda P|? */
-    bool
-    converged(const double residual_norm, const double load_norm) const;
 
     /** Relative residual tolerance. */
     double tolerance = 1e-8;

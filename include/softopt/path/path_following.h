@@ -5,6 +5,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <softopt/base/input.h>
+#include <softopt/path/arclength.h>
 #include <softopt/path/equilibrium_problem.h>
 #include <softopt/path/newton_solver.h>
 
@@ -15,9 +16,11 @@
 namespace softopt
 {
   /**
-   * Follows the equilibrium path r_a(a, lambda) = 0 from lambda = 0 and lands
-   * exactly on each target load factor (subsection "Loading"). Knows
-   * residuals and solves, not physics.
+   * Follows the equilibrium path r_a(a, lambda) = 0 from lambda = 0 with load
+   * control or Crisfield's arclength method, and lands exactly on each target
+   * load factor (subsection "Loading"): a step that crosses a target is
+   * redone from the last converged state with load control to the target.
+   * Knows residuals and solves, not physics.
    */
   class PathFollowing
   {
@@ -61,8 +64,8 @@ namespace softopt
     };
 
     /**
-     * Follows the path from the zero state up to the last of
-     * @p targets (sorted, in (0, inf)).
+     * Follows the path from the zero state up to the last of @p targets
+     * (positive), or until a stop criterion or a step that cannot be solved.
      */
     Result
     run(EquilibriumProblem        &problem,
@@ -71,8 +74,19 @@ namespace softopt
         const Observer            &observer,
         const ConditionalOStream  &log) const;
 
+    enum class Method
+    {
+      load_control,
+      arclength
+    };
+
     /** Cavity pressure at load factor 1, in kPa. */
     double pressure_kPa = 15;
+
+    Method method = Method::load_control;
+
+    /** The weight w of the load factor in the arclength constraint. */
+    double load_factor_weight = 1;
 
     /** Load factors at which a converged state is required. */
     std::vector<double> target_load_factors{1.};
@@ -84,6 +98,16 @@ namespace softopt
 
     /** Stop once V_c / V_0 of the cavity exceeds this (0: no limit). */
     double maximum_volume_ratio = 0;
+
+  private:
+    /** Newton at fixed @p load_factor from @p current, predicted along the
+     * line from @p current through @p guide (if given). */
+    static Arclength::Point
+    load_controlled_step(EquilibriumProblem     &problem,
+                         const NewtonSolver     &newton,
+                         const Arclength::Point &current,
+                         const Arclength::Point *guide,
+                         const double            load_factor);
   };
 } // namespace softopt
 

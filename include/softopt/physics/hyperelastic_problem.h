@@ -80,6 +80,10 @@ namespace softopt
     void
     update(Vector &a, const Vector &du) const override;
 
+    /** Zeroes the element pressures of @p v. */
+    void
+    zero_condensed(Vector &v) const override;
+
     /** The tangent of the last assemble() (for tests and adjoints). */
     const PETScWrappers::MPI::SparseMatrix &
     tangent() const;
@@ -189,6 +193,7 @@ namespace softopt
     QGaussSimplex<2>      quadrature_face;
     IndexSet              locally_owned_dofs;
     IndexSet              locally_relevant_dofs;
+    IndexSet              pressure_dofs;
     AffineConstraints<double> constraints;
 
     /** Per locally owned cell, from the last assemble(): r_p^e, the

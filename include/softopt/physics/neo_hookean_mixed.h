@@ -10,6 +10,21 @@ namespace softopt
   using namespace dealii;
 
   /**
+   * J - 1 = det(I + H) - 1 for a displacement gradient H, from the invariants
+   * of H, tr H + ((tr H)^2 - tr H^2)/2 + det H, without the cancellation of
+   * det(F) - 1: at |H| = 1e-7 the latter keeps one digit, and the pressure
+   * equation multiplies it by K >> G.
+   */
+  template <typename Number>
+  Number
+  jacobian_minus_one(const Tensor<2, 3, Number> &H)
+  {
+    const Number trace = H[0][0] + H[1][1] + H[2][2];
+    return trace + 0.5 * (trace * trace - scalar_product(H, transpose(H))) +
+           determinant(H);
+  }
+
+  /**
    * The nearly incompressible neo-Hookean material in the mixed form of
    * Sussman and Bathe (Eqs. c1, Wmod, p). With p = -K (J - 1) inserted,
    * Eq. Wmod,
