@@ -191,7 +191,11 @@ namespace softopt
                        << "factor " << current.load_factor
                        << " (the last converged one) even with the minimum "
                        << (arclength ? "arclength" : "load increment")
-                       << ": " << failure.what();
+                       << ": " << failure.what()
+                       << (arclength ? "" :
+                                       ". If the pressure has a maximum there "
+                                       "(a limit point), set \"Path following "
+                                       "= arclength\"");
                 result.stop_reason = reason.str();
                 result.failed      = true;
               }
