@@ -7,6 +7,8 @@
 #include <deal.II/base/utilities.h>
 
 #include <softopt/app/analysis.h>
+#include <softopt/app/gradient_check.h>
+#include <softopt/app/optimization.h>
 #include <softopt/app/settings.h>
 
 #include <iostream>
@@ -19,6 +21,10 @@ namespace
   const char *usage =
     "Usage:\n"
     "  softopt analyze CASE.prm          inflate the design along its load path\n"
+    "  softopt optimize CASE.prm         the design loop, then design.stl and the\n"
+    "                                    final design's load path\n"
+    "  softopt optimize CASE.prm --restart  continue from the last checkpoint\n"
+    "  softopt check-gradients CASE.prm  adjoint gradients against finite differences\n"
     "  softopt CASE.prm                  run the prm file's \"Command\"\n"
     "  softopt print-parameters          every entry, with its default and "
     "documentation\n"
@@ -29,7 +35,7 @@ namespace
   print_parameters(std::ostream &out)
   {
     dealii::ParameterHandler prm;
-    softopt::Settings::declare_parameters(prm);
+    softopt::Settings::declare_parameters(prm, nullptr);
     prm.print_parameters(out, dealii::ParameterHandler::PRM);
   }
 } // namespace
@@ -62,7 +68,19 @@ main(int argc, char **argv)
         }
 
       std::string command, file;
-      if (args[0] == "analyze")
+      bool        restart = false;
+      if (args[0] == "optimize")
+        {
+          restart = args.size() == 3 && args[2] == "--restart";
+          AssertThrow(args.size() == 2 || restart,
+                      dealii::ExcMessage(std::string("\"softopt optimize\" needs "
+                                                     "one parameter file and "
+                                                     "optionally --restart.\n") +
+                                         usage));
+          command = args[0];
+          file    = args[1];
+        }
+      else if (args[0] == "analyze" || args[0] == "check-gradients")
         {
           AssertThrow(args.size() == 2,
                       dealii::ExcMessage(std::string("\"softopt ") + args[0] +
@@ -83,9 +101,10 @@ main(int argc, char **argv)
       softopt::Settings settings(file);
       if (command.empty())
         command = settings.command;
-      AssertThrow(command == "analyze",
-                  dealii::ExcMessage("The command \"" + command +
-                                     "\" is not available yet."));
+      if (command == "check-gradients")
+        return softopt::run_gradient_check(settings);
+      if (command == "optimize")
+        return softopt::run_optimization(settings, restart);
       return softopt::run_analysis(settings);
     }
   catch (const dealii::ExceptionBase &e)

@@ -38,7 +38,7 @@ follow(const double A, const double B, const double h, const double p_over_mu)
   const auto   result     = path.run(
     *sphere.problem, newton, {1.},
     [&](const softopt::PathFollowing::PathPoint &point, const auto &a) {
-      const double volume = sphere.problem->cavity_volume(a);
+      const double volume = softopt::cavity_volume(*sphere.problem, *sphere.design, a);
       if (point.load_factor > max_load)
         {
           max_load    = point.load_factor;

@@ -5,6 +5,7 @@
 #ifndef softopt_tests_sphere_h
 #define softopt_tests_sphere_h
 
+#include <softopt/functionals/design_surface.h>
 #include <softopt/path/newton_solver.h>
 #include <softopt/path/path_following.h>
 #include <softopt/physics/hyperelastic_problem.h>
@@ -70,14 +71,15 @@ namespace softopt_tests
         material,
         p_over_mu * material.shear_modulus);
       problem->setup_system();
-      initial_volume = problem->cavity_volume(problem->create_vector());
+      initial_volume =
+        softopt::cavity_volume(*problem, *design, problem->create_vector());
     }
 
     /** lambda_a = (V/V_0)^(1/3). */
     double
     stretch(const softopt::HyperelasticProblem::Vector &a) const
     {
-      return std::cbrt(problem->cavity_volume(a) / initial_volume);
+      return std::cbrt(softopt::cavity_volume(*problem, *design, a) / initial_volume);
     }
 
     parallel::fullydistributed::Triangulation<3>  triangulation;

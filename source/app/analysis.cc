@@ -4,11 +4,13 @@
 
 #include <softopt/app/analysis.h>
 #include <softopt/app/output_directory.h>
-#include <softopt/functionals/surface_mean.h>
+#include <softopt/functionals/design_surface.h>
 #include <softopt/io/csv_writer.h>
 #include <softopt/io/pvd_series.h>
 #include <softopt/physics/hyperelastic_problem.h>
 #include <softopt/shape/design_configuration.h>
+
+#include <fstream>
 
 
 namespace softopt
@@ -19,21 +21,102 @@ namespace softopt
      * radial displacement about the x axis. */
     std::pair<double, double>
     design_means(const HyperelasticProblem         &problem,
+                 const DesignConfiguration         &design,
                  const HyperelasticProblem::Vector &a)
     {
       if (problem.get_geometry().design_boundary_ids.empty())
         return {std::nan(""), std::nan("")};
-      const auto x_axis = [](const Point<3> &) {
-        return Tensor<1, 3>({1., 0., 0.});
-      };
-      const auto inward = [](const Point<3> &X) {
-        return Tensor<1, 3>({0., -X[1], -X[2]}) /
-               std::hypot(X[1], X[2]);
-      };
-      return {design_surface_mean(problem, a, x_axis),
-              design_surface_mean(problem, a, inward)};
+      const CellKernels::DirectionFunction x_axis{
+        [](const Point<3> &) { return Tensor<1, 3>({1., 0., 0.}); },
+        [](const Point<3> &) { return Tensor<2, 3>(); }};
+      const CellKernels::DirectionFunction inward{
+        [](const Point<3> &X) {
+          return Tensor<1, 3>({0., -X[1], -X[2]}) / std::hypot(X[1], X[2]);
+        },
+        [](const Point<3> &) { return Tensor<2, 3>(); }};
+      const auto s_x  = integrate_over_design_surface(problem, design, a, x_axis, false);
+      const auto s_in = integrate_over_design_surface(problem, design, a, inward, false);
+      return {s_x.linear / s_x.area, s_in.linear / s_in.area};
     }
   } // namespace
+
+
+
+  PathFollowing::Result
+  follow_load_path(HyperelasticProblem                   &problem,
+                   const DesignConfiguration             &design,
+                   Settings                              &settings,
+                   const std::vector<const Functional *> &functionals,
+                   const std::vector<double>             &targets,
+                   const std::string                     &directory,
+                   const ConditionalOStream              &pcout)
+  {
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    HyperelasticProblem::Vector a = problem.create_vector();
+    const double initial_volume   = cavity_volume(problem, design, a);
+
+    std::vector<std::string> columns{"step",
+                                     "load_factor",
+                                     "pressure_kPa",
+                                     "cavity_volume_mm3",
+                                     "delta_volume_mm3",
+                                     "design_mean_ux_mm",
+                                     "design_mean_inward_radial_mm"};
+    // Each objective and constraint along the whole path (its value as if
+    // its target were the current load factor).
+    for (const auto *f : functionals)
+      columns.push_back(f->name());
+    for (const auto *c : {"newton_iterations", "residual_norm_N", "at_target"})
+      columns.emplace_back(c);
+    CsvWriter load_path(directory + "/load_path.csv", columns, comm);
+    PvdSeries pvd(directory + "/solution.pvd", comm);
+
+    unsigned int vtu_counter = 0;
+    const auto   record      = [&](const PathFollowing::PathPoint  &point,
+                            const HyperelasticProblem::Vector &state) {
+      const double volume           = cavity_volume(problem, design, state);
+      const auto [mean_ux, mean_in] = design_means(problem, design, state);
+      const double p_kPa = point.load_factor * settings.loading.pressure_kPa;
+      std::vector<std::string> row{std::to_string(point.step),
+                                   CsvWriter::format(point.load_factor),
+                                   CsvWriter::format(p_kPa),
+                                   CsvWriter::format(volume),
+                                   CsvWriter::format(volume - initial_volume),
+                                   CsvWriter::format(mean_ux),
+                                   CsvWriter::format(mean_in)};
+      for (const auto *f : functionals)
+        row.push_back(CsvWriter::format(
+          f->evaluate(problem, design, state, nullptr, nullptr)));
+      row.push_back(std::to_string(point.newton_iterations));
+      row.push_back(CsvWriter::format(point.residual_norm));
+      row.push_back(point.at_target ? "1" : "0");
+      load_path.add_row(row);
+      if (settings.vtu_output == Settings::VtuOutput::every_step ||
+          (settings.vtu_output == Settings::VtuOutput::targets &&
+           point.at_target))
+        pvd.add(point.load_factor,
+                problem.write_vtu(state, directory, "solution", vtu_counter++));
+      pcout << "step " << std::setw(3) << point.step << "  lambda "
+            << std::setprecision(10) << point.load_factor << "  p " << p_kPa
+            << " kPa  V " << volume << " mm^3  dV " << volume - initial_volume
+            << " mm^3  mean u_x " << mean_ux << " mm  mean u_in " << mean_in
+            << " mm  Newton " << point.newton_iterations << std::endl;
+      if (settings.loading.maximum_volume_ratio > 0 &&
+          volume > settings.loading.maximum_volume_ratio * initial_volume)
+        return std::string("the cavity volume exceeded ") +
+               Utilities::to_string(settings.loading.maximum_volume_ratio) +
+               " times its initial volume";
+      return std::string();
+    };
+
+    record({0, 0., 0, 0., false}, a);
+    const PathFollowing::Result result = settings.loading.run(
+      problem, settings.newton, targets, record, pcout);
+    pcout << "Stopped: " << result.stop_reason << std::endl;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      std::ofstream(directory + "/stop_reason.txt") << result.stop_reason << '\n';
+    return result;
+  }
 
 
 
@@ -60,8 +143,8 @@ namespace softopt
           << " tetrahedra, " << problem.get_dof_handler().n_dofs()
           << " degrees of freedom" << std::endl;
 
-    HyperelasticProblem::Vector a = problem.create_vector();
-    const double initial_volume   = problem.cavity_volume(a);
+    const double initial_volume =
+      cavity_volume(problem, design, problem.create_vector());
     AssertThrow(initial_volume > 0,
                 ExcMessage(settings.input->where("Geometry",
                                                  "Pressure boundary ids") +
@@ -77,72 +160,26 @@ namespace softopt
     const double setup_time = setup_timer.wall_time();
     const OutputDirectory out(settings.output_directory, comm);
     out.write_parameters(settings.prm);
-    CsvWriter load_path(out.file("load_path.csv"),
-                        {"step",
-                         "load_factor",
-                         "pressure_kPa",
-                         "cavity_volume_mm3",
-                         "delta_volume_mm3",
-                         "design_mean_ux_mm",
-                         "design_mean_inward_radial_mm",
-                         "newton_iterations",
-                         "residual_norm_N",
-                         "at_target"},
-                        comm);
-    PvdSeries pvd(out.file("solution.pvd"), comm);
+    std::vector<const Functional *> functionals;
+    for (const auto &f : settings.functionals)
+      functionals.push_back(f.get());
 
-    unsigned int vtu_counter = 0;
-    Timer        output_timer;
-    output_timer.stop();
-    const auto   record      = [&](const PathFollowing::PathPoint  &point,
-                            const HyperelasticProblem::Vector &state) {
-      output_timer.start();
-      const double volume            = problem.cavity_volume(state);
-      const auto [mean_ux, mean_in]  = design_means(problem, state);
-      const double       p_kPa = point.load_factor * settings.loading.pressure_kPa;
-      load_path.add_row({std::to_string(point.step),
-                         CsvWriter::format(point.load_factor),
-                         CsvWriter::format(p_kPa),
-                         CsvWriter::format(volume),
-                         CsvWriter::format(volume - initial_volume),
-                         CsvWriter::format(mean_ux),
-                         CsvWriter::format(mean_in),
-                         std::to_string(point.newton_iterations),
-                         CsvWriter::format(point.residual_norm),
-                         point.at_target ? "1" : "0"});
-      if (settings.vtu_output == Settings::VtuOutput::every_step ||
-          (settings.vtu_output == Settings::VtuOutput::targets &&
-           point.at_target))
-        pvd.add(point.load_factor,
-                problem.write_vtu(state, out.path(), "solution", vtu_counter++));
-      pcout << "step " << std::setw(3) << point.step << "  lambda "
-            << std::setprecision(10) << point.load_factor << "  p " << p_kPa
-            << " kPa  V " << volume << " mm^3  dV " << volume - initial_volume
-            << " mm^3  mean u_x " << mean_ux << " mm  mean u_in " << mean_in
-            << " mm  Newton " << point.newton_iterations << std::endl;
-      output_timer.stop();
-      if (settings.loading.maximum_volume_ratio > 0 &&
-          volume > settings.loading.maximum_volume_ratio * initial_volume)
-        return std::string("the cavity volume exceeded ") +
-               Utilities::to_string(settings.loading.maximum_volume_ratio) +
-               " times its initial volume";
-      return std::string();
-    };
-
-    record({0, 0., 0, 0., false}, a);
-    Timer                       path_timer;
-    const PathFollowing::Result result = settings.loading.run(
-      problem, settings.newton, settings.loading.target_load_factors, record, pcout);
+    Timer path_timer;
+    const PathFollowing::Result result =
+      follow_load_path(problem,
+                       design,
+                       settings,
+                       functionals,
+                       settings.loading.target_load_factors,
+                       out.path(),
+                       pcout);
     path_timer.stop();
-    pcout << "Stopped: " << result.stop_reason << std::endl;
-    out.write_text("stop_reason.txt", result.stop_reason + "\n");
     if (settings.print_timings)
       {
         const auto &stats = problem.get_statistics();
         pcout << "Wall time: mesh and setup " << setup_time
-              << " s, path following " << path_timer.wall_time()
-              << " s (of which output " << output_timer.wall_time()
-              << " s)\n  " << stats.n_assemblies << " assemblies "
+              << " s, path following with output " << path_timer.wall_time()
+              << " s\n  " << stats.n_assemblies << " assemblies "
               << stats.assembly_time << " s, " << stats.n_factorizations
               << " factorizations " << stats.factorization_time << " s, "
               << stats.n_solves << " solves " << stats.solve_time << " s"

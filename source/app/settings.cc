@@ -3,7 +3,7 @@
 namespace softopt
 {
   void
-  Settings::declare_parameters(ParameterHandler &prm)
+  Settings::declare_parameters(ParameterHandler &prm, const InputFile *input)
   {
     prm.declare_entry("Output directory",
                       "output",
@@ -27,13 +27,18 @@ namespace softopt
                       "every step",
                       Patterns::Selection("every step|targets|none"),
                       "Which converged states of the load path are written "
-                      "as VTU files (listed in solution.pvd, for ParaView).");
+                      "as VTU files (listed in solution.pvd, for ParaView); "
+                      "\"none\" also switches off the design snapshots of "
+                      "\"optimize\".");
     prm.leave_subsection();
 
     Geometry::declare_parameters(prm);
     MaterialParameters::declare_parameters(prm);
     PathFollowing::declare_parameters(prm);
     NewtonSolver::declare_parameters(prm);
+    ShapeFilter::declare_parameters(prm);
+    OptimizationParameters::declare_parameters(prm);
+    Functionals::declare_parameters(prm, input);
   }
 
 
@@ -41,7 +46,7 @@ namespace softopt
   Settings::Settings(const std::string &file)
     : input(std::make_unique<InputFile>(file))
   {
-    declare_parameters(prm);
+    declare_parameters(prm, input.get());
     prm.parse_input(file);
 
     output_directory = prm.get("Output directory");
@@ -58,5 +63,8 @@ namespace softopt
     material.parse_parameters(prm, *input);
     loading.parse_parameters(prm, *input);
     newton.parse_parameters(prm);
+    shape_filter.parse_parameters(prm, *input);
+    optimization.parse_parameters(prm, *input);
+    functionals = Functionals::create(prm, *input);
   }
 } // namespace softopt

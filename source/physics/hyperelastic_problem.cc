@@ -518,48 +518,6 @@ namespace softopt
 
 
   double
-  HyperelasticProblem::cavity_volume(const Vector &a) const
-  {
-    const Vector    a_ghost = ghosted(a);
-    FEFaceValues<3> fe_face_values(mapping,
-                                   fe,
-                                   quadrature_face,
-                                   update_values | update_gradients |
-                                     update_normal_vectors |
-                                     update_quadrature_points |
-                                     update_JxW_values);
-    const FEValuesExtractors::Vector displacement(0);
-    std::vector<Tensor<2, 3>>        grad_u(quadrature_face.size());
-    std::vector<Tensor<1, 3>>        u(quadrature_face.size());
-    double                           volume = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              is_in(geometry.pressure_boundary_ids,
-                    cell->face(f)->boundary_id()))
-            {
-              fe_face_values.reinit(cell, f);
-              fe_face_values[displacement].get_function_gradients(a_ghost,
-                                                                  grad_u);
-              fe_face_values[displacement].get_function_values(a_ghost, u);
-              for (unsigned int q = 0; q < quadrature_face.size(); ++q)
-                {
-                  const Tensor<2, 3> F = unit_symmetric_tensor<3>() + grad_u[q];
-                  const Tensor<1, 3> n_c_da = determinant(F) *
-                                              (transpose(invert(F)) *
-                                               fe_face_values.normal_vector(q)) *
-                                              fe_face_values.JxW(q);
-                  const Tensor<1, 3> x = fe_face_values.quadrature_point(q) + u[q];
-                  volume -= x * n_c_da / 3.;
-                }
-            }
-    return Utilities::MPI::sum(volume, triangulation_comm);
-  }
-
-
-
-  double
   HyperelasticProblem::min_jacobian(const Vector &a) const
   {
     const Vector a_ghost = ghosted(a);

@@ -21,9 +21,12 @@ namespace softopt
     X_o.reinit(locally_owned_dofs, comm);
     psi.reinit(locally_owned_dofs, comm);
     X.reinit(locally_owned_dofs, locally_relevant_dofs, comm);
+    X_o_ghosted.reinit(locally_owned_dofs, locally_relevant_dofs, comm);
     geometry.initial_coordinates(dof_handler, X_o);
     update_positions();
     mapping = std::make_unique<MappingFEField<3, 3, Vector>>(dof_handler, X);
+    initial_mapping =
+      std::make_unique<MappingFEField<3, 3, Vector>>(dof_handler, X_o_ghosted);
   }
 
 
@@ -32,6 +35,22 @@ namespace softopt
   DesignConfiguration::get_mapping() const
   {
     return *mapping;
+  }
+
+
+
+  const Mapping<3> &
+  DesignConfiguration::get_initial_mapping() const
+  {
+    return *initial_mapping;
+  }
+
+
+
+  const DesignConfiguration::Vector &
+  DesignConfiguration::positions() const
+  {
+    return X;
   }
 
 
@@ -98,12 +117,24 @@ namespace softopt
 
 
   void
+  DesignConfiguration::set_configuration(const Vector &initial_coordinates,
+                                         const Vector &new_psi)
+  {
+    X_o = initial_coordinates;
+    psi = new_psi;
+    update_positions();
+  }
+
+
+
+  void
   DesignConfiguration::update_positions()
   {
     // X is ghosted: assemble X_o + psi in an owned vector, then copy.
     Vector sum = X_o;
     sum += psi;
-    X = sum;
+    X           = sum;
+    X_o_ghosted = X_o;
   }
 
 

@@ -1,7 +1,12 @@
 #ifndef softopt_app_analysis_h
 #define softopt_app_analysis_h
 
+#include <deal.II/base/conditional_ostream.h>
+
 #include <softopt/app/settings.h>
+#include <softopt/path/path_following.h>
+#include <softopt/physics/hyperelastic_problem.h>
+#include <softopt/shape/design_configuration.h>
 
 namespace softopt
 {
@@ -14,6 +19,23 @@ namespace softopt
    */
   int
   run_analysis(Settings &settings);
+
+  /**
+   * Follows the load path of @p settings on @p design, landing on every
+   * load factor of @p targets, and writes into
+   * @p directory load_path.csv (cavity volume, design-surface means and
+   * every functional of @p functionals per converged step), solution.pvd
+   * with its VTU files, and stop_reason.txt. Shared by "analyze" and the
+   * final analysis of "optimize".
+   */
+  PathFollowing::Result
+  follow_load_path(HyperelasticProblem                   &problem,
+                   const DesignConfiguration             &design,
+                   Settings                              &settings,
+                   const std::vector<const Functional *> &functionals,
+                   const std::vector<double>             &targets,
+                   const std::string                     &directory,
+                   const ConditionalOStream              &pcout);
 } // namespace softopt
 
 #endif

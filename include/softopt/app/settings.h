@@ -4,10 +4,13 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <softopt/base/input.h>
+#include <softopt/functionals/functional.h>
 #include <softopt/geometry/geometry.h>
 #include <softopt/path/newton_solver.h>
 #include <softopt/path/path_following.h>
+#include <softopt/optimization/optimization_parameters.h>
 #include <softopt/physics/material_parameters.h>
+#include <softopt/shape/shape_filter.h>
 
 #include <memory>
 #include <string>
@@ -21,9 +24,10 @@ namespace softopt
    */
   struct Settings
   {
-    /** Declares every entry (for @p input's numbered subsections too). */
+    /** Declares every entry; the numbered subsections ("Objective N") those
+     * @p input contains, or one of each as an example without a file. */
     static void
-    declare_parameters(ParameterHandler &prm);
+    declare_parameters(ParameterHandler &prm, const InputFile *input = nullptr);
 
     /** Reads and checks @p file; throws a message naming the file, entry
      * and what is wrong. */
@@ -49,6 +53,11 @@ namespace softopt
     MaterialParameters material;
     PathFollowing      loading;
     NewtonSolver       newton;
+    ShapeFilter        shape_filter;
+    OptimizationParameters optimization;
+
+    /** The objectives and constraints, in the order of the file. */
+    std::vector<std::unique_ptr<Functional>> functionals;
   };
 } // namespace softopt
 

@@ -93,15 +93,6 @@ namespace softopt
     store_pressure(Vector &a) const;
 
     /**
-     * The cavity volume V_c^p = -1/3 int x . n_c da over the pressure
-     * boundary (divergence theorem, the paper's footnote; n_c points out of
-     * the solid), in mm^3. Positive for a closed cavity, and for a cavity cut
-     * by symmetry planes through the origin.
-     */
-    double
-    cavity_volume(const Vector &a) const;
-
-    /**
      * Smallest J over all quadrature points, and its position in the
      * reference configuration (for messages about inverted elements).
      */

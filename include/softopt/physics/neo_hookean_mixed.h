@@ -3,26 +3,13 @@
 
 #include <deal.II/base/tensor.h>
 
+#include <softopt/physics/hyperelastic_parts.h>
+
 #include <cmath>
 
 namespace softopt
 {
   using namespace dealii;
-
-  /**
-   * J - 1 = det(I + H) - 1 for a displacement gradient H, from the invariants
-   * of H, tr H + ((tr H)^2 - tr H^2)/2 + det H, without the cancellation of
-   * det(F) - 1: at |H| = 1e-7 the latter keeps one digit, and the pressure
-   * equation multiplies it by K >> G.
-   */
-  template <typename Number>
-  Number
-  jacobian_minus_one(const Tensor<2, 3, Number> &H)
-  {
-    const Number trace = H[0][0] + H[1][1] + H[2][2];
-    return trace + 0.5 * (trace * trace - scalar_product(H, transpose(H))) +
-           determinant(H);
-  }
 
   /**
    * The nearly incompressible neo-Hookean material in the mixed form of
@@ -63,18 +50,16 @@ namespace softopt
 
     /**
      * The first Piola-Kirchhoff stress P = dW~/dF = F S~ in MPa:
-     *   P = G J^{-2/3} (F - tr C / 3 F^{-T}) - p~ J F^{-T}.
+     *   P = G J^{-2/3} (F - tr C / 3 F^{-T}) - p~ J F^{-T},
+     * the isochoric part and a volumetric part with U'(J) = -p~.
      */
     template <typename Number>
     Tensor<2, 3, Number>
     first_piola(const Tensor<2, 3, Number> &F, const Number &p) const
     {
-      using std::pow;
-      const Number               J       = determinant(F);
-      const Tensor<2, 3, Number> F_inv_T = transpose(invert(F));
-      const Number               I1      = scalar_product(F, F);
-      return (shear_modulus * pow(J, -2. / 3.)) * (F - (I1 / 3.) * F_inv_T) -
-             (p * J) * F_inv_T;
+      const Number minus_p = -p;
+      return HyperelasticParts::isochoric_stress(shear_modulus, F) +
+             HyperelasticParts::volumetric_stress(minus_p, F);
     }
 
     /**
@@ -84,23 +69,8 @@ namespace softopt
     Tensor<4, 3>
     tangent(const Tensor<2, 3> &F, const double p) const
     {
-      const double       J     = determinant(F);
-      const Tensor<2, 3> F_inv = invert(F);
-      const double       I1    = scalar_product(F, F);
-      const double       g     = shear_modulus * std::pow(J, -2. / 3.);
-      Tensor<4, 3>       A;
-      for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int J_ = 0; J_ < 3; ++J_)
-          for (unsigned int k = 0; k < 3; ++k)
-            for (unsigned int L = 0; L < 3; ++L)
-              A[i][J_][k][L] =
-                g * ((i == k && J_ == L ? 1. : 0.) -
-                     2. / 3. * (F_inv[L][k] * F[i][J_] + F[k][L] * F_inv[J_][i]) +
-                     2. / 9. * I1 * F_inv[L][k] * F_inv[J_][i] +
-                     I1 / 3. * F_inv[J_][k] * F_inv[L][i]) -
-                p * J *
-                  (F_inv[L][k] * F_inv[J_][i] - F_inv[J_][k] * F_inv[L][i]);
-      return A;
+      return HyperelasticParts::isochoric_tangent(shear_modulus, F) +
+             HyperelasticParts::volumetric_tangent(-p, 0., F);
     }
 
     /** dP/dp~ = -J F^{-T}: the coupling K_up of Eq. LinMat. */

@@ -32,6 +32,15 @@ namespace softopt
     const Mapping<3> &
     get_mapping() const;
 
+    /** The mapping X_o(xi) of the initial design Omega_o (the shape filter
+     * lives there). */
+    const Mapping<3> &
+    get_initial_mapping() const;
+
+    /** X = X_o + psi, ghosted (the positions the mapping reads). */
+    const Vector &
+    positions() const;
+
     /** The P2 vector DoFs of X_o, psi and d. */
     const DoFHandler<3> &
     get_dof_handler() const;
@@ -61,6 +70,10 @@ namespace softopt
     void
     update_mesh();
 
+    /** Sets X_o and psi (a restart from a checkpoint). */
+    void
+    set_configuration(const Vector &initial_coordinates, const Vector &psi);
+
     /** The smallest Jacobian determinant det(dX/dxi) over the quadrature
      * points of @p quadrature (negative: an inverted element). */
     double
@@ -77,7 +90,9 @@ namespace softopt
     Vector        X_o;
     Vector        psi;
     Vector        X;
+    Vector        X_o_ghosted;
     std::unique_ptr<MappingFEField<3, 3, Vector>> mapping;
+    std::unique_ptr<MappingFEField<3, 3, Vector>> initial_mapping;
   };
 } // namespace softopt
 

@@ -1,0 +1,20 @@
+#ifndef softopt_app_optimization_h
+#define softopt_app_optimization_h
+
+#include <softopt/app/settings.h>
+
+namespace softopt
+{
+  /**
+   * "softopt optimize CASE.prm [--restart]": the design loop, then what a
+   * designer takes away, in the output directory: history.csv, design.stl
+   * (the optimized body, watertight, mm), VTU/PVD snapshots, the forward
+   * analysis of the final design in final_analysis/ (load_path.csv as from
+   * "analyze"), and PNG plots when python3-matplotlib is installed.
+   * Returns the exit code.
+   */
+  int
+  run_optimization(Settings &settings, const bool restart);
+} // namespace softopt
+
+#endif

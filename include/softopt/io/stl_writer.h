@@ -1,0 +1,25 @@
+#ifndef softopt_io_stl_writer_h
+#define softopt_io_stl_writer_h
+
+#include <softopt/shape/design_configuration.h>
+
+#include <string>
+
+namespace softopt
+{
+  /**
+   * Writes the boundary of the design X = X_o + psi as a binary STL in mm,
+   * for mold design: every boundary face of the quadratic mesh is split at
+   * its edge midpoints into four triangles, oriented with outward normals.
+   * Neighbouring faces share their corner and midpoint nodes, whose
+   * coordinates are read from the same degrees of freedom, so the surface
+   * is watertight (every edge in exactly two triangles, in opposite
+   * directions). Collective; rank 0 writes @p file (through a temporary
+   * file, so a good STL is never left half-written). Returns the number of
+   * triangles.
+   */
+  unsigned int
+  write_design_stl(const DesignConfiguration &design, const std::string &file);
+} // namespace softopt
+
+#endif

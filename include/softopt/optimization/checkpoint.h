@@ -1,0 +1,52 @@
+#ifndef softopt_optimization_checkpoint_h
+#define softopt_optimization_checkpoint_h
+
+#include <deal.II/lac/petsc_vector.h>
+
+#include <softopt/optimization/mma.h>
+
+#include <string>
+
+namespace softopt
+{
+  using namespace dealii;
+
+  /**
+   * The whole state of the design loop at the top of an iteration, written
+   * to and read from a directory "checkpoint" in the output directory: the
+   * iteration number, the design d, the initial coordinates X_o (changed by
+   * mesh updates), the shape field psi (the filter's Newton starts there)
+   * and MMA's previous iterates and asymptotes, one binary file per rank.
+   * A new checkpoint is written beside the old one and then renamed over
+   * it, so a run killed while writing keeps the previous checkpoint. A
+   * restart needs the same parameter file and number of MPI ranks.
+   */
+  namespace Checkpoint
+  {
+    using Vector = dealii::PETScWrappers::MPI::Vector;
+
+    /** The checkpoint directory in @p output_directory. */
+    std::string
+    directory(const std::string &output_directory);
+
+    void
+    save(const std::string &output_directory,
+         const unsigned int iteration,
+         const Vector      &d,
+         const Vector      &X_o,
+         const Vector      &psi,
+         const MMA         &mma);
+
+    /** Reads the vectors (set up with the partition of this run) and MMA's
+     * state, and returns the iteration to continue with. Throws a message
+     * if there is no checkpoint or it does not fit this run. */
+    unsigned int
+    load(const std::string &output_directory,
+         Vector            &d,
+         Vector            &X_o,
+         Vector            &psi,
+         MMA               &mma);
+  } // namespace Checkpoint
+} // namespace softopt
+
+#endif

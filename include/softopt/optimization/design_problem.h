@@ -1,0 +1,120 @@
+#ifndef softopt_optimization_design_problem_h
+#define softopt_optimization_design_problem_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
+
+#include <softopt/app/settings.h>
+#include <softopt/functionals/functional.h>
+#include <softopt/physics/hyperelastic_problem.h>
+#include <softopt/shape/design_configuration.h>
+#include <softopt/shape/shape_filter.h>
+
+#include <map>
+#include <memory>
+#include <vector>
+
+namespace softopt
+{
+  /**
+   * Everything between a design vector d and the functionals with their
+   * gradients dg/dd (Sections 3, 5 and 6.1): the shape filter psi(d), the
+   * design X = X_o + psi driving the mapping, the equilibrium path to every
+   * target load factor, the functionals there, and their adjoint
+   * sensitivities. d, psi and X are P2 vector fields on the same mesh, in mm.
+   */
+  class DesignProblem
+  {
+  public:
+    using Vector = PETScWrappers::MPI::Vector;
+
+    /** Builds mesh, design configuration, filter and physics from
+     * @p settings, which must outlive this. */
+    explicit DesignProblem(Settings &settings);
+
+    /** A zero design vector. */
+    Vector
+    create_design_vector() const;
+
+    /** Adds the cavity volume at the last target load factor ("V") to the
+     * functionals (the gradient check tests it too). */
+    void
+    add_cavity_volume();
+
+    /** The file's objectives and constraints (and "V" if added), in order. */
+    const std::vector<const Functional *> &
+    functionals() const;
+
+    /**
+     * The functional values at design @p d: filters d, follows the path to
+     * every target load factor (the union of "Target load factors" and the
+     * functionals' load factors) and evaluates the functionals. Throws a
+     * message if the filter refuses the shape or the path cannot reach a
+     * target.
+     */
+    std::vector<double>
+    evaluate(const Vector &d);
+
+    /** dg/dd of every functional at the last evaluate(), by the adjoint
+     * method (Eqs. sens01-sens06). */
+    std::vector<Vector>
+    gradients();
+
+    /** The mesh update of Section 5: X_o <- X_o + psi(@p d), psi <- 0; the
+     * caller sets d <- 0. The geometry and every functional stay unchanged.
+     * Throws like evaluate() if the filter refuses @p d. */
+    void
+    update_mesh(const Vector &d);
+
+    /** psi of the last filter solve. */
+    const Vector &
+    shape_field() const;
+
+    /** Sets X_o and psi (a restart from a checkpoint). */
+    void
+    restore(const Vector &initial_coordinates, const Vector &psi);
+
+    /** The filter's report of the last evaluate(). */
+    const ShapeFilter::Result &
+    filter_result() const;
+
+    const HyperelasticProblem &
+    hyperelastic_problem() const;
+
+    /** The physics on the current design (the final analysis follows its
+     * load path). */
+    HyperelasticProblem &
+    hyperelastic_problem();
+
+    const DesignConfiguration &
+    design_configuration() const;
+
+    /** Wall times of the stages (filter, path following, functionals,
+     * adjoints), summed over the run. */
+    TimerOutput &
+    timer();
+
+    /** The converged states at the target load factors of the last
+     * evaluate(). */
+    const std::map<double, Vector> &
+    target_states() const;
+
+  private:
+    Settings                                     &settings;
+    MPI_Comm                                      comm;
+    parallel::fullydistributed::Triangulation<3>  triangulation;
+    std::unique_ptr<DesignConfiguration>          design;
+    std::unique_ptr<NeoHookeanMixed>              material;
+    std::unique_ptr<HyperelasticProblem>          problem;
+    std::vector<const Functional *>               functionals_;
+    std::unique_ptr<Functional>                   volume;
+    std::vector<double>                           targets;
+    Vector                                        psi;
+    ShapeFilter::Result                           last_filter_result;
+    std::map<double, Vector>                      states;
+    TimerOutput                                   timer_output;
+  };
+} // namespace softopt
+
+#endif

@@ -1,0 +1,40 @@
+#ifndef softopt_optimization_optimization_parameters_h
+#define softopt_optimization_optimization_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <softopt/base/input.h>
+
+namespace softopt
+{
+  /** The design loop (subsection "Optimization"), the paper's values by
+   * default. */
+  struct OptimizationParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm, const InputFile &input);
+
+    unsigned int maximum_iterations = 350;
+    /** The largest change of a design variable per iteration, as a fraction
+     * of the box width 2 x design bound (MMA's move limit). */
+    double move_limit = 0.025;
+    /** |d| <= design bound, in mm. */
+    double design_bound = 1.2;
+    unsigned int mesh_update_interval = 50;
+    unsigned int output_interval      = 10;
+    unsigned int checkpoint_interval  = 10;
+    unsigned int final_analysis_steps = 20;
+
+    /** Whether iteration @p k > 0 is one of every @p interval (0: none). */
+    static bool
+    every(const unsigned int k, const unsigned int interval)
+    {
+      return interval > 0 && k > 0 && k % interval == 0;
+    }
+  };
+} // namespace softopt
+
+#endif

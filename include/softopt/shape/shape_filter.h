@@ -1,0 +1,109 @@
+#ifndef softopt_shape_shape_filter_h
+#define softopt_shape_shape_filter_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/petsc_sparse_matrix.h>
+#include <deal.II/lac/petsc_vector.h>
+
+#include <softopt/base/input.h>
+#include <softopt/geometry/geometry.h>
+#include <softopt/shape/design_configuration.h>
+#include <softopt/solvers/direct_solver.h>
+
+namespace softopt
+{
+  /**
+   * The nonlinear PDE filter of Section 3: the shape field psi minimizes
+   *   Pi_psi(psi; d) = 1/2 int W_psi(F_psi) dV + 1/(2|Omega_o|) int |psi - d|^2 dV
+   * over the initial design Omega_o (Eq. PDEpot01, with W_psi of Eq. Wshape),
+   * with psi = 0 on the shape-fixed boundaries. Its stationarity,
+   *   r_psi = 1/2 int P_psi : grad dpsi dV + 1/|Omega_o| int (psi - d) . dpsi dV,
+   * is Eq. PDEpot02 derived from the potential (the coupling is the volume
+   * integral over Omega_o scaled by 1/|Omega_o|, not the surface integral
+   * of Eq. PDE04, which contradicts the potential; see doc/theory.md).
+   * Solved by Newton with a MUMPS factorization kept for the adjoint.
+   */
+  class ShapeFilter
+  {
+  public:
+    using Vector = PETScWrappers::MPI::Vector;
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm, const InputFile &input);
+
+    /** K_psi and G_psi in mm^-1, k_psi dimensionless (Eq. Wshape). */
+    double K_psi = 1e-5, G_psi = 1e-2, k_psi = 10;
+
+    /** Boundaries where psi = 0 (empty: every Dirichlet and design
+     * boundary, the paper's choice). */
+    std::vector<types::boundary_id> fixed_boundary_ids;
+
+    /**
+     * Builds the constraints, matrices and |Omega_o| on @p design; call again
+     * after a mesh update (Omega_o changes). @p design must outlive this.
+     */
+    void
+    setup(const DesignConfiguration &design, const Geometry &geometry);
+
+    /** What a filter solve reports: Newton iterations and the health of
+     * the shape it produced. */
+    struct Result
+    {
+      unsigned int iterations = 0;
+      /** The smallest J_psi = det(I + grad psi) at a quadrature point. */
+      double min_J_psi = 1;
+      /** The worst mean-ratio quality of the tetrahedra of X = X_o + psi
+       * through their corner nodes (1: equilateral, <= 0: inverted). */
+      double worst_quality = 1;
+    };
+
+    /**
+     * psi(d) by Newton from the given @p psi. Throws a message if the shape
+     * inverts an element (J_psi <= 0 or det(dX/dxi) <= 0); such a shape
+     * never reaches the physics.
+     */
+    Result
+    solve(const Vector &d, Vector &psi);
+
+    /** Solves (dr_psi/dpsi)^T mu = @p rhs at the last solution (the tangent
+     * is symmetric; its factorization is kept for every right hand side). */
+    void
+    solve_adjoint(const Vector &rhs, Vector &mu);
+
+    /** -mu^T dr_psi/dd = M mu / |Omega_o| (Eq. sens06). */
+    Vector
+    design_gradient(const Vector &mu) const;
+
+    /** r_psi(psi; d); with @p with_tangent also dr_psi/dpsi (tangent()). */
+    Vector
+    residual(const Vector &d, const Vector &psi, const bool with_tangent);
+
+    const PETScWrappers::MPI::SparseMatrix &
+    tangent() const;
+
+    const AffineConstraints<double> &
+    get_constraints() const;
+
+    /** |Omega_o| in mm^3. */
+    double
+    initial_volume() const;
+
+  private:
+    Result
+    mesh_health(const Vector &psi) const;
+
+    const DesignConfiguration       *design = nullptr;
+    AffineConstraints<double>        constraints;
+    PETScWrappers::MPI::SparseMatrix matrix;
+    PETScWrappers::MPI::SparseMatrix mass_matrix;
+    std::unique_ptr<DirectSolver>    solver;
+    bool                             factorized_at_solution = false;
+    double                           volume                 = 0;
+  };
+} // namespace softopt
+
+#endif

@@ -1,0 +1,104 @@
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/timer.h>
+
+#include <softopt/app/analysis.h>
+#include <softopt/app/optimization.h>
+#include <softopt/app/output_directory.h>
+#include <softopt/io/stl_writer.h>
+#include <softopt/optimization/shape_optimizer.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+namespace softopt
+{
+  namespace
+  {
+    /** Runs scripts/plot_optimization on the output directory if Debian's
+     * python3 with matplotlib is there; says so if not. */
+    void
+    plot(const std::string &directory, const ConditionalOStream &pcout)
+    {
+      const std::string script = SOFTOPT_SOURCE_DIR "/scripts/plot_optimization";
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        return;
+      const bool available =
+        std::filesystem::exists(script) &&
+        std::system("/usr/bin/python3 -c 'import matplotlib' > /dev/null 2>&1") == 0;
+      if (!available)
+        {
+          pcout << "Plots skipped: they need /usr/bin/python3 with matplotlib "
+                   "(apt-get install python3-matplotlib) and "
+                << script << std::endl;
+          return;
+        }
+      const std::string command =
+        "/usr/bin/python3 " + script + " '" + directory + "'";
+      if (std::system(command.c_str()) != 0)
+        pcout << "Plotting failed: " << command << std::endl;
+    }
+  } // namespace
+
+
+
+  int
+  run_optimization(Settings &settings, const bool restart)
+  {
+    ConditionalOStream pcout(std::cout,
+                             Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+    Timer         timer;
+    DesignProblem problem(settings);
+    pcout << "Mesh: " << problem.hyperelastic_problem().get_dof_handler()
+                           .get_triangulation()
+                           .n_global_active_cells()
+          << " tetrahedra, "
+          << problem.design_configuration().get_dof_handler().n_dofs()
+          << " design variables" << std::endl;
+
+    // Input is checked: only now touch the output directory.
+    const OutputDirectory out(settings.output_directory, MPI_COMM_WORLD);
+    if (!restart)
+      out.write_parameters(settings.prm);
+    ShapeOptimizer     optimizer(settings, problem, out);
+    const std::string  reason = optimizer.run(restart);
+    pcout << "Stopped: " << reason << std::endl;
+    out.write_text("stop_reason.txt", reason + "\n");
+
+    // The final design: the last one the physics accepted.
+    if (optimizer.failed())
+      problem.evaluate(optimizer.design());
+    const unsigned int n_triangles =
+      write_design_stl(problem.design_configuration(), out.file("design.stl"));
+    pcout << "Wrote " << out.file("design.stl") << " (" << n_triangles
+          << " triangles, mm)" << std::endl;
+
+    pcout << "\nForward analysis of the final design:" << std::endl;
+    const std::string final_directory = out.file("final_analysis");
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      std::filesystem::create_directories(final_directory);
+    MPI_Barrier(MPI_COMM_WORLD);
+    std::vector<double> targets = settings.loading.target_load_factors;
+    const unsigned int  n       = settings.optimization.final_analysis_steps;
+    for (unsigned int i = 1; i <= n; ++i)
+      targets.push_back(double(i) / n);
+    for (const auto *f : problem.functionals())
+      targets.push_back(f->load_factor());
+    std::sort(targets.begin(), targets.end());
+    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+    const auto result = follow_load_path(problem.hyperelastic_problem(),
+                                         problem.design_configuration(),
+                                         settings,
+                                         problem.functionals(),
+                                         targets,
+                                         final_directory,
+                                         pcout);
+    plot(out.path(), pcout);
+    if (settings.print_timings)
+      {
+        problem.timer().print_summary();
+        pcout << "Wall time: " << timer.wall_time() << " s" << std::endl;
+      }
+    return optimizer.failed() || result.failed ? 1 : 0;
+  }
+} // namespace softopt

@@ -1,0 +1,165 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
+
+#include <softopt/optimization/checkpoint.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <vector>
+
+namespace softopt
+{
+  namespace Checkpoint
+  {
+    namespace
+    {
+      constexpr std::uint64_t magic = 0x736f66746f707431; // "softopt1"
+
+      std::string
+      rank_file(const std::string &dir, const MPI_Comm comm)
+      {
+        return dir + "/rank-" +
+               std::to_string(Utilities::MPI::this_mpi_process(comm)) + ".bin";
+      }
+
+      template <typename T>
+      void
+      write_value(std::ostream &out, const T &value)
+      {
+        out.write(reinterpret_cast<const char *>(&value), sizeof(T));
+      }
+
+      template <typename T>
+      T
+      read_value(std::istream &in)
+      {
+        T value{};
+        in.read(reinterpret_cast<char *>(&value), sizeof(T));
+        return value;
+      }
+
+      /** The locally owned entries of @p v, in index order. */
+      void
+      write_vector(std::ostream &out, const Vector &v)
+      {
+        const auto owned = v.locally_owned_elements();
+        const std::vector<types::global_dof_index> indices(owned.begin(),
+                                                           owned.end());
+        std::vector<double> values(indices.size());
+        v.extract_subvector_to(indices.begin(), indices.end(), values.begin());
+        write_value<std::uint64_t>(out, values.size());
+        out.write(reinterpret_cast<const char *>(values.data()),
+                  values.size() * sizeof(double));
+      }
+
+      void
+      read_vector(std::istream &in, Vector &v, const std::string &file)
+      {
+        const auto owned = v.locally_owned_elements();
+        AssertThrow(read_value<std::uint64_t>(in) == owned.n_elements(),
+                    ExcMessage(file + " was written for another mesh or "
+                                      "another number of MPI ranks."));
+        std::vector<double> values(owned.n_elements());
+        in.read(reinterpret_cast<char *>(values.data()),
+                values.size() * sizeof(double));
+        std::vector<types::global_dof_index> indices(owned.begin(), owned.end());
+        v.set(indices, values);
+        v.compress(VectorOperation::insert);
+      }
+    } // namespace
+
+
+
+    std::string
+    directory(const std::string &output_directory)
+    {
+      return output_directory + "/checkpoint";
+    }
+
+
+
+    void
+    save(const std::string &output_directory,
+         const unsigned int iteration,
+         const Vector      &d,
+         const Vector      &X_o,
+         const Vector      &psi,
+         const MMA         &mma)
+    {
+      namespace fs     = std::filesystem;
+      const auto  comm = d.get_mpi_communicator();
+      const bool  root = Utilities::MPI::this_mpi_process(comm) == 0;
+      const auto  dir  = directory(output_directory);
+      const auto  next = dir + ".new";
+      if (root)
+        {
+          fs::remove_all(next);
+          fs::create_directories(next);
+        }
+      MPI_Barrier(comm);
+      {
+        const auto    file = rank_file(next, comm);
+        std::ofstream out(file, std::ios::binary);
+        write_value(out, magic);
+        write_value<std::uint32_t>(out, Utilities::MPI::n_mpi_processes(comm));
+        write_value<std::uint32_t>(out, iteration);
+        write_vector(out, d);
+        write_vector(out, X_o);
+        write_vector(out, psi);
+        mma.save(out);
+        AssertThrow(out, ExcMessage("Writing the checkpoint " + file + " failed."));
+      }
+      // Every rank has written: swap the new checkpoint in.
+      MPI_Barrier(comm);
+      if (root)
+        {
+          fs::remove_all(dir + ".old");
+          if (fs::exists(dir))
+            fs::rename(dir, dir + ".old");
+          fs::rename(next, dir);
+          fs::remove_all(dir + ".old");
+        }
+      MPI_Barrier(comm);
+    }
+
+
+
+    unsigned int
+    load(const std::string &output_directory,
+         Vector            &d,
+         Vector            &X_o,
+         Vector            &psi,
+         MMA               &mma)
+    {
+      const auto comm = d.get_mpi_communicator();
+      // A run killed between the two renames of save() left ".old".
+      const auto dir =
+        std::filesystem::exists(directory(output_directory)) ?
+          directory(output_directory) :
+          directory(output_directory) + ".old";
+      const auto    file = rank_file(dir, comm);
+      std::ifstream in(file, std::ios::binary);
+      AssertThrow(in,
+                  ExcMessage("--restart: there is no checkpoint " + file +
+                             " (checkpoints are written every \"Checkpoint "
+                             "interval\" iterations of subsection Optimization "
+                             "into the output directory)."));
+      AssertThrow(read_value<std::uint64_t>(in) == magic,
+                  ExcMessage(file + " is not a softopt checkpoint."));
+      const auto n_ranks = read_value<std::uint32_t>(in);
+      AssertThrow(n_ranks == Utilities::MPI::n_mpi_processes(comm),
+                  ExcMessage("--restart: the checkpoint was written by " +
+                             std::to_string(n_ranks) +
+                             " MPI ranks; restart with mpirun -np " +
+                             std::to_string(n_ranks) + "."));
+      const auto iteration = read_value<std::uint32_t>(in);
+      read_vector(in, d, file);
+      read_vector(in, X_o, file);
+      read_vector(in, psi, file);
+      mma.load(in);
+      AssertThrow(in, ExcMessage("The checkpoint " + file + " is truncated."));
+      return iteration;
+    }
+  } // namespace Checkpoint
+} // namespace softopt

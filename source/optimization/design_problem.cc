@@ -1,0 +1,212 @@
+#include <deal.II/base/exceptions.h>
+
+#include <softopt/optimization/design_problem.h>
+#include <softopt/shape/residual_shape_derivative.h>
+
+#include <algorithm>
+
+namespace softopt
+{
+  DesignProblem::DesignProblem(Settings &settings)
+    : settings(settings)
+    , comm(MPI_COMM_WORLD)
+    , triangulation(comm)
+    , timer_output(comm, std::cout, TimerOutput::never, TimerOutput::wall_times)
+  {
+    settings.geometry.create_triangulation(triangulation);
+    design   = std::make_unique<DesignConfiguration>(triangulation, settings.geometry);
+    material = std::make_unique<NeoHookeanMixed>(settings.material.youngs_modulus,
+                                                 settings.material.poissons_ratio);
+    problem  = std::make_unique<HyperelasticProblem>(triangulation,
+                                                    design->get_mapping(),
+                                                    settings.geometry,
+                                                    *material,
+                                                    settings.loading.pressure_kPa * 1e-3);
+    problem->setup_system();
+    settings.shape_filter.setup(*design, settings.geometry);
+    psi = design->create_vector();
+
+    for (const auto &f : settings.functionals)
+      functionals_.push_back(f.get());
+    targets = settings.loading.target_load_factors;
+    for (const auto *f : functionals_)
+      targets.push_back(f->load_factor());
+    std::sort(targets.begin(), targets.end());
+    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+  }
+
+
+
+  DesignProblem::Vector
+  DesignProblem::create_design_vector() const
+  {
+    return design->create_vector();
+  }
+
+
+
+  void
+  DesignProblem::add_cavity_volume()
+  {
+    volume = Functionals::cavity_volume(targets.back());
+    functionals_.push_back(volume.get());
+  }
+
+
+
+  const std::vector<const Functional *> &
+  DesignProblem::functionals() const
+  {
+    return functionals_;
+  }
+
+
+
+  std::vector<double>
+  DesignProblem::evaluate(const Vector &d)
+  {
+    // Eq. PDEpot02 for psi(d), starting from the last psi; then the mapping.
+    {
+      TimerOutput::Scope scope(timer_output, "shape filter");
+      last_filter_result = settings.shape_filter.solve(d, psi);
+      design->set_shape_field(psi);
+    }
+
+    TimerOutput::Scope scope(timer_output, "path following");
+    ConditionalOStream quiet(std::cout, false);
+    const auto         result = settings.loading.run(
+      *problem,
+      settings.newton,
+      targets,
+      [](const PathFollowing::PathPoint &, const Vector &) { return std::string(); },
+      quiet);
+    AssertThrow(result.target_states.size() == targets.size(),
+                ExcMessage("The load path of this design did not reach every "
+                           "target load factor: " +
+                           result.stop_reason));
+    states.clear();
+    for (unsigned int i = 0; i < targets.size(); ++i)
+      states.emplace(result.target_load_factors[i], result.target_states[i]);
+
+    std::vector<double> values;
+    for (const auto *f : functionals_)
+      values.push_back(
+        f->evaluate(*problem, *design, states.at(f->load_factor()), nullptr, nullptr));
+    return values;
+  }
+
+
+
+  std::vector<DesignProblem::Vector>
+  DesignProblem::gradients()
+  {
+    std::vector<Vector> result(functionals_.size());
+    Vector              r, P, dg_da, dg_dX, mu_a, mu_psi;
+    for (const auto &[load_factor, a] : states)
+      {
+        bool factorized = false;
+        for (unsigned int i = 0; i < functionals_.size(); ++i)
+          {
+            if (functionals_[i]->load_factor() != load_factor)
+              continue;
+            if (!factorized)
+              {
+                TimerOutput::Scope scope(timer_output, "adjoint: tangent");
+                // The adjoint of the condensed system shares the tangent at
+                // the target state (symmetric, Eq. adj2).
+                problem->assemble(a, load_factor, r, P, true);
+                problem->factorize();
+                factorized = true;
+              }
+            TimerOutput::Scope scope(timer_output, "adjoint: solves, shape derivatives");
+            functionals_[i]->evaluate(*problem, *design, a, &dg_da, &dg_dX);
+            problem->solve(dg_da, mu_a);
+            // Eq. adj3: (dr_psi/dpsi)^T mu_psi = dg/dpsi - (dr_a/dpsi)^T mu_a
+            dg_dX -= residual_shape_derivative(*problem, *design, a, load_factor, mu_a);
+            settings.shape_filter.solve_adjoint(dg_dX, mu_psi);
+            // Eq. sens06: dg/dd = -mu_psi^T dr_psi/dd
+            result[i] = settings.shape_filter.design_gradient(mu_psi);
+          }
+      }
+    return result;
+  }
+
+
+
+  void
+  DesignProblem::update_mesh(const Vector &d)
+  {
+    last_filter_result = settings.shape_filter.solve(d, psi);
+    design->set_shape_field(psi);
+    design->update_mesh();
+    psi = 0;
+    // Omega_o changed: the filter's matrices and |Omega_o| with it.
+    settings.shape_filter.setup(*design, settings.geometry);
+  }
+
+
+
+  const DesignProblem::Vector &
+  DesignProblem::shape_field() const
+  {
+    return psi;
+  }
+
+
+
+  void
+  DesignProblem::restore(const Vector &initial_coordinates, const Vector &shape_field)
+  {
+    design->set_configuration(initial_coordinates, shape_field);
+    psi = shape_field;
+    settings.shape_filter.setup(*design, settings.geometry);
+  }
+
+
+
+  HyperelasticProblem &
+  DesignProblem::hyperelastic_problem()
+  {
+    return *problem;
+  }
+
+
+
+  const ShapeFilter::Result &
+  DesignProblem::filter_result() const
+  {
+    return last_filter_result;
+  }
+
+
+
+  const HyperelasticProblem &
+  DesignProblem::hyperelastic_problem() const
+  {
+    return *problem;
+  }
+
+
+
+  const DesignConfiguration &
+  DesignProblem::design_configuration() const
+  {
+    return *design;
+  }
+
+
+
+  TimerOutput &
+  DesignProblem::timer()
+  {
+    return timer_output;
+  }
+
+
+
+  const std::map<double, DesignProblem::Vector> &
+  DesignProblem::target_states() const
+  {
+    return states;
+  }
+} // namespace softopt

@@ -1,0 +1,66 @@
+#include <softopt/optimization/optimization_parameters.h>
+
+namespace softopt
+{
+  void
+  OptimizationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Optimization");
+    prm.declare_entry("Maximum iterations",
+                      "350",
+                      Patterns::Integer(0),
+                      "Design iterations (MMA updates); the paper uses 350.");
+    prm.declare_entry("Move limit",
+                      "0.025",
+                      Patterns::Double(1e-6, 1),
+                      "The largest change of a design variable in one "
+                      "iteration, as a fraction of its box width 2 x Design "
+                      "bound (dimensionless; the paper uses 0.025).");
+    prm.declare_entry("Design bound",
+                      "1.2",
+                      Patterns::Double(1e-9),
+                      "The box constraint |d_k| <= Design bound on every "
+                      "design variable, in mm (the paper uses 1.2); also the "
+                      "design scale of check-gradients.");
+    prm.declare_entry("Mesh update interval",
+                      "50",
+                      Patterns::Integer(0),
+                      "Every this many iterations the mesh coordinates are "
+                      "updated, X_o <- X_o + psi and d <- 0, which frees the "
+                      "box constraints again (0: never; the paper uses 50).");
+    prm.declare_entry("Output interval",
+                      "10",
+                      Patterns::Integer(0),
+                      "Every this many iterations the design and its deformed "
+                      "states are written as VTU (0: only the final design).");
+    prm.declare_entry("Checkpoint interval",
+                      "10",
+                      Patterns::Integer(0),
+                      "Every this many iterations the whole state is written "
+                      "for \"softopt optimize CASE.prm --restart\" (0: never).");
+    prm.declare_entry("Final analysis steps",
+                      "20",
+                      Patterns::Integer(1, 10000),
+                      "The final design is inflated again after the loop "
+                      "(final_analysis/load_path.csv); its path lands on this "
+                      "many equally spaced load factors in (0, 1] besides "
+                      "the targets, for the pressure-volume curve.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  OptimizationParameters::parse_parameters(ParameterHandler &prm, const InputFile &)
+  {
+    prm.enter_subsection("Optimization");
+    maximum_iterations   = prm.get_integer("Maximum iterations");
+    move_limit           = prm.get_double("Move limit");
+    design_bound         = prm.get_double("Design bound");
+    mesh_update_interval = prm.get_integer("Mesh update interval");
+    output_interval      = prm.get_integer("Output interval");
+    checkpoint_interval  = prm.get_integer("Checkpoint interval");
+    final_analysis_steps = prm.get_integer("Final analysis steps");
+    prm.leave_subsection();
+  }
+} // namespace softopt

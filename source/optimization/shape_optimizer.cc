@@ -1,0 +1,251 @@
+#include <deal.II/base/timer.h>
+
+#include <softopt/optimization/checkpoint.h>
+#include <softopt/optimization/shape_optimizer.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace softopt
+{
+  ShapeOptimizer::ShapeOptimizer(Settings              &settings,
+                                 DesignProblem         &problem,
+                                 const OutputDirectory &out)
+    : settings(settings)
+    , problem(problem)
+    , out(out)
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    , d(problem.create_design_vector())
+    , accepted(d)
+  {
+    const auto &functionals = problem.functionals();
+    AssertThrow(!functionals.empty() &&
+                  functionals.front()->kind() == Functional::Kind::objective,
+                ExcMessage(settings.input->path() +
+                           ": \"optimize\" needs at least one objective "
+                           "(subsection Objective 1)."));
+    reset_mma();
+  }
+
+
+
+  std::string
+  ShapeOptimizer::run(const bool restart)
+  {
+    const auto        &opt   = settings.optimization;
+    unsigned int       k     = restart ? resume() : 0;
+    const unsigned int first = k;
+    if (!restart)
+      {
+        std::vector<std::string> columns{"iteration"};
+        for (const auto *f : problem.functionals())
+          columns.push_back(f->name());
+        for (const auto *c : {"max_design_change_mm", "wall_time_s",
+                              "filter_iterations", "min_J_psi", "worst_quality"})
+          columns.emplace_back(c);
+        history = std::make_unique<CsvWriter>(out.file("history.csv"),
+                                              columns,
+                                              MPI_COMM_WORLD);
+      }
+
+    for (; k < opt.maximum_iterations; ++k)
+      {
+        if (k > first && opt.every(k, opt.mesh_update_interval))
+          {
+            problem.update_mesh(d); // X_o <- X_o + psi(d)
+            d = 0;
+            reset_mma();
+          }
+        if (k > first && opt.every(k, opt.checkpoint_interval))
+          Checkpoint::save(out.path(), k, d,
+                           problem.design_configuration().initial_coordinates(),
+                           problem.shape_field(), *mma);
+
+        Timer               timer;
+        std::vector<double> values;
+        try
+          {
+            values = problem.evaluate(d); // psi(d), X, path to every target
+          }
+        catch (const ExceptionBase &e)
+          {
+            std::ostringstream message;
+            e.print_info(message);
+            stopped_on_error = true;
+            return "the design of iteration " + std::to_string(k) +
+                   " was refused: " + Utilities::trim(message.str()) +
+                   " The last accepted design is that of iteration " +
+                   std::to_string(k - 1) + "; checkpoints are in " +
+                   Checkpoint::directory(out.path()) + ".";
+          }
+        const auto gradients = problem.gradients(); // adjoints, Eqs. sens01-06
+        accepted             = d;
+        if ((k == 0 && opt.output_interval > 0) || opt.every(k, opt.output_interval))
+          write_snapshot(k);
+        const double change = mma_step(values, gradients);
+        record(k, values, change, timer.wall_time());
+      }
+    // The final design, unless just written.
+    const bool written = opt.output_interval > 0 &&
+                         (k - 1 == 0 || opt.every(k - 1, opt.output_interval));
+    if (k > first && !written)
+      write_snapshot(k - 1);
+    return "reached the maximum number of iterations (" +
+           std::to_string(opt.maximum_iterations) + ")";
+  }
+
+
+
+  const ShapeOptimizer::Vector &
+  ShapeOptimizer::design() const
+  {
+    return accepted;
+  }
+
+
+
+  bool
+  ShapeOptimizer::failed() const
+  {
+    return stopped_on_error;
+  }
+
+
+
+  void
+  ShapeOptimizer::reset_mma()
+  {
+    std::vector<MMA::RowType> rows;
+    for (const auto *f : problem.functionals())
+      rows.push_back(f->kind() == Functional::Kind::objective ?
+                       MMA::RowType::objective :
+                       MMA::RowType::constraint);
+    MMA::Settings mma_settings;
+    mma_settings.move_limit = settings.optimization.move_limit;
+    mma = std::make_unique<MMA>(d.locally_owned_size(), rows, MPI_COMM_WORLD, mma_settings);
+  }
+
+
+
+  unsigned int
+  ShapeOptimizer::resume()
+  {
+    Vector X_o = problem.create_design_vector(), psi = X_o;
+    const unsigned int k = Checkpoint::load(out.path(), d, X_o, psi, *mma);
+    problem.restore(X_o, psi);
+
+    // history.csv keeps its header and the rows before the checkpoint.
+    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      {
+        std::ifstream            in(out.file("history.csv"));
+        std::vector<std::string> lines;
+        for (std::string line; std::getline(in, line);)
+          if (lines.empty() || std::stoul(line.substr(0, line.find(','))) < k)
+            lines.push_back(line);
+        std::ofstream rewrite(out.file("history.csv"));
+        for (const auto &line : lines)
+          rewrite << line << '\n';
+      }
+    MPI_Barrier(MPI_COMM_WORLD);
+    history = std::make_unique<CsvWriter>(out.file("history.csv"), MPI_COMM_WORLD);
+    pcout << "Restarting at iteration " << k << " from "
+          << Checkpoint::directory(out.path()) << std::endl;
+    return k;
+  }
+
+
+
+  double
+  ShapeOptimizer::mma_step(const std::vector<double> &values,
+                           const std::vector<Vector> &gradients)
+  {
+    // The min-max form needs positive objective rows (z >= 0): shifting
+    // every g_i by the same constant C only moves z, and C above the
+    // largest |g_i| keeps the bound z >= 0 inactive.
+    double shift = 1;
+    for (unsigned int i = 0; i < values.size(); ++i)
+      if (problem.functionals()[i]->kind() == Functional::Kind::objective)
+        shift = std::max(shift, 1 + 2 * std::abs(values[i]));
+    std::vector<double> rows = values;
+    for (unsigned int i = 0; i < values.size(); ++i)
+      if (problem.functionals()[i]->kind() == Functional::Kind::objective)
+        rows[i] += shift;
+
+    const IndexSet owned = d.locally_owned_elements();
+    const std::vector<types::global_dof_index> indices(owned.begin(), owned.end());
+    const auto local = [&](const Vector &v) {
+      std::vector<double> x(indices.size());
+      v.extract_subvector_to(indices.begin(), indices.end(), x.begin());
+      return x;
+    };
+    std::vector<double> x = local(d);
+    std::vector<std::vector<double>> dg;
+    std::vector<ArrayView<const double>> dg_views;
+    for (const auto &g : gradients)
+      dg.push_back(local(g));
+    for (const auto &g : dg)
+      dg_views.emplace_back(g);
+    const double bound = settings.optimization.design_bound;
+    const std::vector<double> xmin(x.size(), -bound), xmax(x.size(), bound);
+
+    mma->update(x, 0., {}, rows, dg_views, xmin, xmax);
+    d.set(indices, x);
+    d.compress(VectorOperation::insert);
+    return mma->last_step();
+  }
+
+
+
+  void
+  ShapeOptimizer::record(const unsigned int         iteration,
+                         const std::vector<double> &values,
+                         const double               change,
+                         const double               wall_time)
+  {
+    const auto &health = problem.filter_result();
+    std::vector<std::string> row{std::to_string(iteration)};
+    for (const double v : values)
+      row.push_back(CsvWriter::format(v));
+    row.push_back(CsvWriter::format(change));
+    row.push_back(CsvWriter::format(wall_time));
+    row.push_back(std::to_string(health.iterations));
+    row.push_back(CsvWriter::format(health.min_J_psi));
+    row.push_back(CsvWriter::format(health.worst_quality));
+    history->add_row(row);
+
+    pcout << "iteration " << std::setw(4) << iteration;
+    for (unsigned int i = 0; i < values.size(); ++i)
+      pcout << "  " << problem.functionals()[i]->name() << " "
+            << std::setprecision(8) << values[i];
+    pcout << "  max|dd| " << std::setprecision(4) << change << " mm  min J_psi "
+          << health.min_J_psi;
+    if (settings.print_timings)
+      pcout << "  " << std::setprecision(3) << wall_time << " s";
+    pcout << std::endl;
+  }
+
+
+
+  void
+  ShapeOptimizer::write_snapshot(const unsigned int iteration)
+  {
+    if (settings.vtu_output == Settings::VtuOutput::none)
+      return;
+    const auto &physics = problem.hyperelastic_problem();
+    const auto  add     = [&](const std::string &name, const Vector &a) {
+      auto &series = snapshots[name];
+      if (!series)
+        series = std::make_unique<PvdSeries>(out.file(name + ".pvd"), MPI_COMM_WORLD);
+      series->add(iteration, physics.write_vtu(a, out.path(), name, iteration));
+    };
+    add("design", physics.create_vector());
+    for (const auto &[load_factor, a] : problem.target_states())
+      {
+        std::ostringstream name;
+        name << "deformed_at_" << load_factor;
+        add(name.str(), a);
+      }
+  }
+} // namespace softopt

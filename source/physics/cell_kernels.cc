@@ -1,0 +1,373 @@
+#include <deal.II/differentiation/ad.h>
+#include <deal.II/fe/fe_simplex_p.h>
+#include <deal.II/grid/reference_cell.h>
+
+#include <softopt/physics/cell_kernels.h>
+
+namespace softopt
+{
+  ReferenceTetrahedron::ReferenceTetrahedron(const Quadrature<3> &cell_quadrature,
+                                             const Quadrature<2> &face_quadrature)
+  {
+    const FE_SimplexP<3> fe(2);
+    AssertDimension(fe.n_dofs_per_cell(), 10);
+    const auto evaluate = [&](const Point<3> &xi, const double weight) {
+      QuadraturePoint point;
+      for (unsigned int a = 0; a < 10; ++a)
+        {
+          point.values[a]    = fe.shape_value(a, xi);
+          point.gradients[a] = fe.shape_grad(a, xi);
+        }
+      point.weight = weight;
+      return point;
+    };
+
+    for (unsigned int q = 0; q < cell_quadrature.size(); ++q)
+      cell_points.push_back(
+        evaluate(cell_quadrature.point(q), cell_quadrature.weight(q)));
+
+    const ReferenceCell tet = ReferenceCells::Tetrahedron;
+    const Point<3>      centroid(0.25, 0.25, 0.25);
+    for (unsigned int f = 0; f < 4; ++f)
+      {
+        std::array<Point<3>, 3> v;
+        for (unsigned int i = 0; i < 3; ++i)
+          v[i] = tet.vertex<3>(tet.face_to_cell_vertices(f, i, 1));
+        Tensor<1, 3> t0 = v[1] - v[0], t1 = v[2] - v[0];
+        const Point<3> face_centroid((v[0] + v[1] + v[2]) / 3.);
+        if (cross_product_3d(t0, t1) * (face_centroid - centroid) < 0)
+          std::swap(t0, t1);
+        face_tangents[f] = {{t0, t1}};
+        for (unsigned int q = 0; q < face_quadrature.size(); ++q)
+          {
+            const Point<2> &st = face_quadrature.point(q);
+            face_points[f].push_back(
+              evaluate(v[0] + st[0] * t0 + st[1] * t1, face_quadrature.weight(q)));
+          }
+      }
+  }
+
+
+
+  namespace CellKernels
+  {
+    namespace
+    {
+      using AD = Sacado::Fad::DFad<double>;
+
+      template <typename Number>
+      using Nodes = std::array<Tensor<1, 3, Number>, 10>;
+
+      /** Nodal values as AD numbers, each component an independent
+       * variable (3 a + c). */
+      Nodes<AD>
+      independent(const NodalVectors &values)
+      {
+        Nodes<AD> nodes;
+        for (unsigned int a = 0; a < 10; ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            nodes[a][c] = AD(30, 3 * a + c, values[a][c]);
+        return nodes;
+      }
+
+      /** d(value)/d(independent 3 a + c) as nodal vectors. */
+      NodalVectors
+      derivatives(const AD &value)
+      {
+        NodalVectors d;
+        for (unsigned int a = 0; a < 10; ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            d[a][c] = value.size() > 0 ? value.dx(3 * a + c) : 0.;
+        return d;
+      }
+
+      /** dX/dxi at a quadrature point. */
+      template <typename Number>
+      Tensor<2, 3, Number>
+      jacobian(const ReferenceTetrahedron::QuadraturePoint &point,
+               const Nodes<Number>                         &X)
+      {
+        Tensor<2, 3, Number> J;
+        for (unsigned int a = 0; a < 10; ++a)
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              J[i][j] += X[a][i] * point.gradients[a][j];
+        return J;
+      }
+
+      /** sum_a N_a y_a at a quadrature point. */
+      template <typename Number>
+      Tensor<1, 3, Number>
+      interpolate(const ReferenceTetrahedron::QuadraturePoint &point,
+                  const Nodes<Number>                         &y)
+      {
+        Tensor<1, 3, Number> value;
+        for (unsigned int a = 0; a < 10; ++a)
+          for (unsigned int i = 0; i < 3; ++i)
+            value[i] += point.values[a] * y[a][i];
+        return value;
+      }
+
+      /** n^ = x_{,s} x x_{,t} on face f (Eq. normal without normalization). */
+      template <typename Number>
+      Tensor<1, 3, Number>
+      area_normal(const ReferenceTetrahedron                  &reference,
+                  const unsigned int                           face,
+                  const ReferenceTetrahedron::QuadraturePoint &point,
+                  const Nodes<Number>                         &x)
+      {
+        const Tensor<2, 3, Number> J  = jacobian(point, x);
+        const Tensor<1, 3, Number> xs = J * reference.face_tangents[face][0];
+        const Tensor<1, 3, Number> xt = J * reference.face_tangents[face][1];
+        return cross_product_3d(xs, xt);
+      }
+
+      template <typename Number>
+      Nodes<Number>
+      residual(const ReferenceTetrahedron &reference,
+               const NeoHookeanMixed      &material,
+               const NodalVectors         &u,
+               const Nodes<Number>        &X)
+      {
+        const unsigned int n_q = reference.cell_points.size();
+        std::vector<Nodes<Number>>        grad_N(n_q);
+        std::vector<Tensor<2, 3, Number>> H(n_q);
+        std::vector<Number>               dV(n_q);
+        Number                            volume = 0, dilatation = 0;
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const auto &point = reference.cell_points[q];
+            const Tensor<2, 3, Number> J       = jacobian(point, X);
+            const Tensor<2, 3, Number> J_inv_T = transpose(invert(J));
+            for (unsigned int a = 0; a < 10; ++a)
+              grad_N[q][a] = J_inv_T * point.gradients[a];
+            for (unsigned int a = 0; a < 10; ++a)
+              for (unsigned int i = 0; i < 3; ++i)
+                for (unsigned int j = 0; j < 3; ++j)
+                  H[q][i][j] += u[a][i] * grad_N[q][a][j];
+            dV[q] = determinant(J) * point.weight;
+            volume += dV[q];
+            const Number J_minus_1 = jacobian_minus_one(H[q]);
+            dilatation += J_minus_1 * dV[q];
+          }
+        // r_p = 0 solved for the element pressure (Eq. statCond1).
+        const Number p = -material.bulk_modulus * dilatation / volume;
+
+        Nodes<Number> r;
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            Tensor<2, 3, Number> F = H[q];
+            for (unsigned int i = 0; i < 3; ++i)
+              F[i][i] += 1.;
+            const Tensor<2, 3, Number> P = material.first_piola(F, p);
+            for (unsigned int a = 0; a < 10; ++a)
+              {
+                const Tensor<1, 3, Number> force = P * grad_N[q][a];
+                for (unsigned int i = 0; i < 3; ++i)
+                  r[a][i] += force[i] * dV[q];
+              }
+          }
+        return r;
+      }
+
+      template <typename Number>
+      Nodes<Number>
+      load(const ReferenceTetrahedron &reference,
+           const unsigned int          face,
+           const double                p_hat,
+           const Nodes<Number>        &x)
+      {
+        Nodes<Number> f;
+        for (const auto &point : reference.face_points[face])
+          {
+            const Tensor<1, 3, Number> n = area_normal(reference, face, point, x);
+            for (unsigned int a = 0; a < 10; ++a)
+              for (unsigned int i = 0; i < 3; ++i)
+                f[a][i] += p_hat * point.values[a] * point.weight * n[i];
+          }
+        return f;
+      }
+
+      template <typename Number>
+      Number
+      volume(const ReferenceTetrahedron &reference,
+             const unsigned int          face,
+             const Nodes<Number>        &x)
+      {
+        Number V = 0;
+        for (const auto &point : reference.face_points[face])
+          {
+            const Tensor<1, 3, Number> n  = area_normal(reference, face, point, x);
+            const Tensor<1, 3, Number> xq = interpolate(point, x);
+            const Number               xn = xq * n;
+            V -= xn * point.weight / 3.;
+          }
+        return V;
+      }
+
+      double
+      value_of(const double x)
+      {
+        return x;
+      }
+
+      double
+      value_of(const AD &x)
+      {
+        return x.val();
+      }
+
+      template <typename Number>
+      std::array<Number, 3>
+      moments(const ReferenceTetrahedron &reference,
+              const unsigned int          face,
+              const NodalVectors         &u,
+              const Nodes<Number>        &X,
+              const DirectionFunction    &v,
+              NodalVectors               *d_linear_du,
+              NodalVectors               *d_quadratic_du)
+      {
+        std::array<Number, 3> m{{0., 0., 0.}};
+        for (const auto &point : reference.face_points[face])
+          {
+            using std::sqrt;
+            const Tensor<1, 3, Number> n  = area_normal(reference, face, point, X);
+            const Number               dS = sqrt(n * n) * point.weight;
+            const Tensor<1, 3, Number> Xq = interpolate(point, X);
+            Point<3>                   X_value;
+            for (unsigned int i = 0; i < 3; ++i)
+              X_value[i] = value_of(Xq[i]);
+            // v(X) to first order about X_value carries the exact first
+            // derivative: the problem-specific dv/dpsi of Eq. g0sens.
+            const Tensor<1, 3>   v0 = v.value(X_value);
+            const Tensor<2, 3>   G  = v.gradient(X_value);
+            Tensor<1, 3, Number> v_q;
+            for (unsigned int i = 0; i < 3; ++i)
+              {
+                v_q[i] = v0[i];
+                for (unsigned int j = 0; j < 3; ++j)
+                  v_q[i] += G[i][j] * (Xq[j] - X_value[j]);
+              }
+            Tensor<1, 3> u_q;
+            for (unsigned int a = 0; a < 10; ++a)
+              u_q += point.values[a] * u[a];
+            const Number s = u_q * v_q;
+            m[0] += dS;
+            m[1] += s * dS;
+            m[2] += s * s * dS;
+            if (d_linear_du != nullptr)
+              for (unsigned int a = 0; a < 10; ++a)
+                {
+                  const double w = point.values[a] * value_of(dS);
+                  (*d_linear_du)[a] += w * v0;
+                  (*d_quadratic_du)[a] += 2. * value_of(s) * w * v0;
+                }
+          }
+        return m;
+      }
+
+      Nodes<double>
+      as_nodes(const NodalVectors &v)
+      {
+        return v;
+      }
+    } // namespace
+
+
+
+    NodalVectors
+    condensed_residual(const ReferenceTetrahedron &reference,
+                       const NeoHookeanMixed      &material,
+                       const NodalVectors         &u,
+                       const NodalVectors         &X)
+    {
+      return residual(reference, material, u, as_nodes(X));
+    }
+
+
+
+    NodalVectors
+    condensed_residual_shape_derivative(const ReferenceTetrahedron &reference,
+                                        const NeoHookeanMixed      &material,
+                                        const NodalVectors         &u,
+                                        const NodalVectors         &X,
+                                        const NodalVectors         &mu)
+    {
+      const Nodes<AD> r = residual(reference, material, u, independent(X));
+      AD              mu_r = 0;
+      for (unsigned int a = 0; a < 10; ++a)
+        for (unsigned int i = 0; i < 3; ++i)
+          mu_r += mu[a][i] * r[a][i];
+      return derivatives(mu_r);
+    }
+
+
+
+    NodalVectors
+    follower_load(const ReferenceTetrahedron &reference,
+                  const unsigned int          face,
+                  const double                p_hat,
+                  const NodalVectors         &x)
+    {
+      return load(reference, face, p_hat, as_nodes(x));
+    }
+
+
+
+    NodalVectors
+    follower_load_derivative(const ReferenceTetrahedron &reference,
+                             const unsigned int          face,
+                             const double                p_hat,
+                             const NodalVectors         &x,
+                             const NodalVectors         &mu)
+    {
+      const Nodes<AD> f    = load(reference, face, p_hat, independent(x));
+      AD              mu_f = 0;
+      for (unsigned int a = 0; a < 10; ++a)
+        for (unsigned int i = 0; i < 3; ++i)
+          mu_f += mu[a][i] * f[a][i];
+      return derivatives(mu_f);
+    }
+
+
+
+    double
+    cavity_volume(const ReferenceTetrahedron &reference,
+                  const unsigned int          face,
+                  const NodalVectors         &x,
+                  NodalVectors               *d_dx)
+    {
+      if (d_dx == nullptr)
+        return volume(reference, face, as_nodes(x));
+      const AD V = volume(reference, face, independent(x));
+      *d_dx      = derivatives(V);
+      return V.val();
+    }
+
+
+
+    FaceMoments
+    face_moments(const ReferenceTetrahedron &reference,
+                 const unsigned int          face,
+                 const NodalVectors         &u,
+                 const NodalVectors         &X,
+                 const DirectionFunction    &v)
+    {
+      FaceMoments result;
+      const auto  m = moments(reference,
+                             face,
+                             u,
+                             independent(X),
+                             v,
+                             &result.d_linear_du,
+                             &result.d_quadratic_du);
+      result.area           = m[0].val();
+      result.linear         = m[1].val();
+      result.quadratic      = m[2].val();
+      result.d_area_dX      = derivatives(m[0]);
+      result.d_linear_dX    = derivatives(m[1]);
+      result.d_quadratic_dX = derivatives(m[2]);
+      return result;
+    }
+  } // namespace CellKernels
+} // namespace softopt

@@ -1,0 +1,100 @@
+#include <deal.II/fe/fe.h>
+
+#include <softopt/shape/cell_nodes.h>
+
+namespace softopt
+{
+  namespace
+  {
+    std::array<std::array<types::global_dof_index, 3>, 10>
+    nodal_dofs(const DoFHandler<3>::active_cell_iterator &cell)
+    {
+      const FiniteElement<3> &fe = cell->get_fe();
+      std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+      cell->get_dof_indices(dofs);
+      std::array<std::array<types::global_dof_index, 3>, 10> result;
+      for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        {
+          const auto [component, node] = fe.system_to_component_index(i);
+          if (component < 3)
+            result[node][component] = dofs[i];
+        }
+      return result;
+    }
+  } // namespace
+
+
+
+  CellNodes::CellNodes(const DoFHandler<3>::active_cell_iterator &displacement_cell,
+                       const DoFHandler<3>::active_cell_iterator &design_cell)
+    : displacement_cell(displacement_cell)
+    , u_dofs(nodal_dofs(displacement_cell))
+    , X_dofs(nodal_dofs(design_cell))
+  {}
+
+
+
+  NodalVectors
+  CellNodes::displacement(const PETScWrappers::MPI::Vector &a) const
+  {
+    NodalVectors u;
+    for (unsigned int n = 0; n < 10; ++n)
+      for (unsigned int c = 0; c < 3; ++c)
+        u[n][c] = a(u_dofs[n][c]);
+    return u;
+  }
+
+
+
+  NodalVectors
+  CellNodes::design(const PETScWrappers::MPI::Vector &X) const
+  {
+    NodalVectors x;
+    for (unsigned int n = 0; n < 10; ++n)
+      for (unsigned int c = 0; c < 3; ++c)
+        x[n][c] = X(X_dofs[n][c]);
+    return x;
+  }
+
+
+
+  void
+  CellNodes::add_to_displacement(const NodalVectors         &values,
+                                 PETScWrappers::MPI::Vector &v) const
+  {
+    for (unsigned int n = 0; n < 10; ++n)
+      for (unsigned int c = 0; c < 3; ++c)
+        v(u_dofs[n][c]) += values[n][c];
+  }
+
+
+
+  void
+  CellNodes::add_to_design(const NodalVectors         &values,
+                           PETScWrappers::MPI::Vector &v) const
+  {
+    for (unsigned int n = 0; n < 10; ++n)
+      for (unsigned int c = 0; c < 3; ++c)
+        v(X_dofs[n][c]) += values[n][c];
+  }
+
+
+
+  const DoFHandler<3>::active_cell_iterator &
+  CellNodes::cell() const
+  {
+    return displacement_cell;
+  }
+
+
+
+  DoFHandler<3>::active_cell_iterator
+  same_cell(const DoFHandler<3>::active_cell_iterator &cell,
+            const DoFHandler<3>                       &other)
+  {
+    return DoFHandler<3>::active_cell_iterator(&cell->get_triangulation(),
+                                               cell->level(),
+                                               cell->index(),
+                                               &other);
+  }
+} // namespace softopt

@@ -1,0 +1,409 @@
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/vector.h>
+
+#include <softopt/shape/fictitious_material.h>
+#include <softopt/shape/shape_filter.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+namespace softopt
+{
+  void
+  ShapeFilter::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Shape filter");
+    prm.declare_entry("K_psi",
+                      "1e-5",
+                      Patterns::Double(0),
+                      "Bulk-like modulus K_psi of the fictitious energy "
+                      "(Eq. Wshape), in mm^-1: resists volume change of the "
+                      "mesh.");
+    prm.declare_entry("G_psi",
+                      "1e-2",
+                      Patterns::Double(0),
+                      "Shear-like modulus G_psi of the fictitious energy "
+                      "(Eq. Wshape), in mm^-1: larger values smooth the shape "
+                      "field over longer distances (about sqrt(G_psi "
+                      "|Omega_o|)) and keep elements better shaped; the "
+                      "paper uses 1e-2 (gripper) and 3e-2.");
+    prm.declare_entry("k_psi",
+                      "10",
+                      Patterns::Double(0),
+                      "Exponent k_psi of the fictitious energy (Eq. Wshape), "
+                      "dimensionless: stiffens compression of elements.");
+    prm.declare_entry("Fixed boundary ids",
+                      "",
+                      Patterns::List(Patterns::Integer(0, 254)),
+                      "Boundaries where the shape field psi is zero (the "
+                      "shape cannot change there). Empty: every Dirichlet "
+                      "boundary and every design boundary, as in the paper.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  ShapeFilter::parse_parameters(ParameterHandler &prm, const InputFile &input)
+  {
+    prm.enter_subsection("Shape filter");
+    K_psi              = prm.get_double("K_psi");
+    G_psi              = prm.get_double("G_psi");
+    k_psi              = prm.get_double("k_psi");
+    fixed_boundary_ids = parse_boundary_ids(prm.get("Fixed boundary ids"),
+                                            input.where("Shape filter",
+                                                        "Fixed boundary ids"));
+    prm.leave_subsection();
+    AssertThrow(K_psi > 0 || G_psi > 0,
+                ExcMessage(input.where("Shape filter", "G_psi") +
+                           ": K_psi and G_psi cannot both be zero."));
+  }
+
+
+
+  void
+  ShapeFilter::setup(const DesignConfiguration &design_configuration,
+                     const Geometry            &geometry)
+  {
+    design                         = &design_configuration;
+    const DoFHandler<3> &dofs      = design->get_dof_handler();
+    const MPI_Comm       comm      = dofs.get_communicator();
+    const IndexSet       owned     = dofs.locally_owned_dofs();
+    IndexSet             relevant;
+    DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+
+    std::vector<types::boundary_id> fixed = fixed_boundary_ids;
+    if (fixed.empty())
+      {
+        for (const auto &[id, components] : geometry.dirichlet_boundaries)
+          fixed.push_back(id);
+        fixed.insert(fixed.end(),
+                     geometry.design_boundary_ids.begin(),
+                     geometry.design_boundary_ids.end());
+      }
+    constraints.clear();
+    constraints.reinit(relevant);
+    std::vector<types::global_dof_index> face_dofs(
+      dofs.get_fe().n_dofs_per_face());
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (!cell->is_artificial())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->face(f)->at_boundary() &&
+              std::find(fixed.begin(), fixed.end(), cell->face(f)->boundary_id()) !=
+                fixed.end())
+            {
+              cell->face(f)->get_dof_indices(face_dofs);
+              for (const auto i : face_dofs)
+                if (relevant.is_element(i))
+                  constraints.add_line(i);
+            }
+    constraints.close();
+
+    DynamicSparsityPattern dsp(relevant);
+    DoFTools::make_sparsity_pattern(dofs, dsp);
+    SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+    matrix.reinit(owned, owned, dsp, comm);
+    mass_matrix.reinit(owned, owned, dsp, comm);
+
+    // The mass matrix of Omega_o (for dr_psi/dd) and |Omega_o|.
+    const QGaussSimplex<3> quadrature(2);
+    FEValues<3>            fe_values(design->get_initial_mapping(),
+                          dofs.get_fe(),
+                          quadrature,
+                          update_values | update_JxW_values);
+    const unsigned int     n = dofs.get_fe().n_dofs_per_cell();
+    FullMatrix<double>     cell_mass(n, n);
+    std::vector<types::global_dof_index> dof_indices(n);
+    volume = 0;
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          cell_mass = 0;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              volume += fe_values.JxW(q);
+              for (unsigned int i = 0; i < n; ++i)
+                for (unsigned int j = 0; j < n; ++j)
+                  if (dofs.get_fe().system_to_component_index(i).first ==
+                      dofs.get_fe().system_to_component_index(j).first)
+                    cell_mass(i, j) += fe_values.shape_value(i, q) *
+                                       fe_values.shape_value(j, q) *
+                                       fe_values.JxW(q);
+            }
+          cell->get_dof_indices(dof_indices);
+          mass_matrix.add(dof_indices, cell_mass);
+        }
+    mass_matrix.compress(VectorOperation::add);
+    volume = Utilities::MPI::sum(volume, comm);
+    solver = std::make_unique<DirectSolver>(comm);
+    factorized_at_solution = false;
+  }
+
+
+
+  ShapeFilter::Vector
+  ShapeFilter::residual(const Vector &d, const Vector &psi, const bool with_tangent)
+  {
+    const DoFHandler<3>     &dofs = design->get_dof_handler();
+    const FiniteElement<3>  &fe   = dofs.get_fe();
+    const Vector             psi_g = design->ghosted(psi), d_g = design->ghosted(d);
+    const QGaussSimplex<3>   quadrature(2);
+    FEValues<3>              fe_values(design->get_initial_mapping(),
+                          fe,
+                          quadrature,
+                          update_values | update_gradients | update_JxW_values);
+    const FEValuesExtractors::Vector  shape(0);
+    const FictitiousMaterial          material(K_psi, G_psi, k_psi);
+    const unsigned int                n = fe.n_dofs_per_cell();
+    FullMatrix<double>                cell_matrix(n, n);
+    dealii::Vector<double>            cell_residual(n);
+    std::vector<types::global_dof_index> dof_indices(n);
+    std::vector<Tensor<2, 3>>         grad_psi(quadrature.size());
+    std::vector<Tensor<1, 3>>         psi_values(quadrature.size()),
+      d_values(quadrature.size());
+
+    Vector r(dofs.locally_owned_dofs(), dofs.get_communicator());
+    if (with_tangent)
+      matrix = 0;
+    bool inverted = false;
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[shape].get_function_gradients(psi_g, grad_psi);
+          fe_values[shape].get_function_values(psi_g, psi_values);
+          fe_values[shape].get_function_values(d_g, d_values);
+          cell_matrix   = 0;
+          cell_residual = 0;
+          for (unsigned int q = 0; q < quadrature.size(); ++q)
+            {
+              const Tensor<2, 3> F = unit_symmetric_tensor<3>() + grad_psi[q];
+              if (!(determinant(F) > 0))
+                {
+                  inverted = true;
+                  break;
+                }
+              // 1/2 from the potential (Eq. PDEpot01).
+              const Tensor<2, 3> P   = 0.5 * material.first_piola(F);
+              const Tensor<1, 3> gap = (psi_values[q] - d_values[q]) / volume;
+              const double       JxW = fe_values.JxW(q);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const unsigned int c_i = fe.system_to_component_index(i).first;
+                  cell_residual(i) +=
+                    (P[c_i] * fe_values.shape_grad(i, q) +
+                     gap[c_i] * fe_values.shape_value(i, q)) *
+                    JxW;
+                }
+              if (!with_tangent)
+                continue;
+              const Tensor<4, 3> A = 0.5 * material.tangent(F);
+              for (unsigned int i = 0; i < n; ++i)
+                {
+                  const unsigned int  c_i = fe.system_to_component_index(i).first;
+                  const Tensor<1, 3> &g_i = fe_values.shape_grad(i, q);
+                  for (unsigned int j = 0; j < n; ++j)
+                    {
+                      const unsigned int  c_j = fe.system_to_component_index(j).first;
+                      const Tensor<1, 3> &g_j = fe_values.shape_grad(j, q);
+                      double              a   = 0;
+                      for (unsigned int k = 0; k < 3; ++k)
+                        for (unsigned int l = 0; l < 3; ++l)
+                          a += A[c_i][k][c_j][l] * g_i[k] * g_j[l];
+                      if (c_i == c_j)
+                        a += fe_values.shape_value(i, q) *
+                             fe_values.shape_value(j, q) / volume;
+                      cell_matrix(i, j) += a * JxW;
+                    }
+                }
+            }
+          cell->get_dof_indices(dof_indices);
+          if (with_tangent)
+            constraints.distribute_local_to_global(
+              cell_matrix, cell_residual, dof_indices, matrix, r);
+          else
+            constraints.distribute_local_to_global(cell_residual, dof_indices, r);
+        }
+    r.compress(VectorOperation::add);
+    if (with_tangent)
+      matrix.compress(VectorOperation::add);
+    AssertThrow(!Utilities::MPI::logical_or(inverted, dofs.get_communicator()),
+                ExcMessage("The shape filter met an inverted element (J_psi <= "
+                           "0): the design moved too far for the mesh. Reduce "
+                           "the design bound or the move limit, or increase "
+                           "G_psi or K_psi (subsection \"Shape filter\")."));
+    factorized_at_solution = false;
+    return r;
+  }
+
+
+
+  ShapeFilter::Result
+  ShapeFilter::solve(const Vector &d, Vector &psi)
+  {
+    Vector Md = design->create_vector();
+    mass_matrix.vmult(Md, d);
+    constraints.set_zero(Md);
+    const double scale = Md.l2_norm() / volume;
+
+    // Converged when the residual is small against the coupling to d, or
+    // when the update reaches the round-off of the positions (for a tiny d
+    // the residual's round-off floor, about G_psi eps, stays above any
+    // tolerance relative to d).
+    Result       result;
+    Vector       increment;
+    const double tolerance = 1e-10;
+    const double round_off = 1e-14 * design->initial_coordinates().linfty_norm();
+    bool         small_update = false;
+    for (unsigned int it = 0;; ++it)
+      {
+        Vector       r    = residual(d, psi, true);
+        const double norm = r.l2_norm();
+        if (norm <= tolerance * scale || norm < 1e-300 || small_update)
+          {
+            result.iterations = it;
+            break;
+          }
+        AssertThrow(it < 30 && std::isfinite(norm),
+                    ExcMessage("The shape filter's Newton iteration did not "
+                               "converge (|r| = " +
+                               std::to_string(norm) +
+                               "): the design is too far from the mesh. Reduce "
+                               "the design bound or the move limit."));
+        solver->factorize(matrix);
+        r *= -1.;
+        increment.reinit(r);
+        solver->solve(r, increment);
+        constraints.set_zero(increment);
+        psi += increment;
+        small_update = increment.linfty_norm() <= round_off;
+      }
+    const Result health  = mesh_health(psi);
+    result.min_J_psi     = health.min_J_psi;
+    result.worst_quality = health.worst_quality;
+    std::ostringstream message;
+    message << "The shape field inverts elements (smallest J_psi = "
+            << result.min_J_psi << ", worst element quality "
+            << result.worst_quality << "); the shape is refused. Reduce the "
+            << "design bound or the move limit, or increase G_psi or K_psi "
+            << "(subsection \"Shape filter\").";
+    AssertThrow(result.min_J_psi > 0 && result.worst_quality > 0,
+                ExcMessage(message.str()));
+    return result;
+  }
+
+
+
+  void
+  ShapeFilter::solve_adjoint(const Vector &rhs, Vector &mu)
+  {
+    // The tangent of the last residual() at the solution; factor it once.
+    if (!factorized_at_solution)
+      {
+        solver->factorize(matrix);
+        factorized_at_solution = true;
+      }
+    Vector b = rhs;
+    constraints.set_zero(b);
+    mu.reinit(b);
+    solver->solve(b, mu);
+    constraints.set_zero(mu);
+  }
+
+
+
+  ShapeFilter::Vector
+  ShapeFilter::design_gradient(const Vector &mu) const
+  {
+    Vector g = design->create_vector();
+    mass_matrix.vmult(g, mu);
+    g /= volume;
+    return g;
+  }
+
+
+
+  ShapeFilter::Result
+  ShapeFilter::mesh_health(const Vector &psi) const
+  {
+    const DoFHandler<3>    &dofs  = design->get_dof_handler();
+    const FiniteElement<3> &fe    = dofs.get_fe();
+    const Vector            psi_g = design->ghosted(psi);
+    Vector                  X     = design->initial_coordinates();
+    X += psi;
+    const Vector           X_g = design->ghosted(X);
+    const QGaussSimplex<3> quadrature(2);
+    FEValues<3>            fe_values(design->get_initial_mapping(),
+                          fe,
+                          quadrature,
+                          update_gradients);
+    const FEValuesExtractors::Vector     shape(0);
+    std::vector<Tensor<2, 3>>            grad_psi(quadrature.size());
+    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    Result                               result;
+    for (const auto &cell : dofs.active_cell_iterators())
+      if (cell->is_locally_owned())
+        {
+          fe_values.reinit(cell);
+          fe_values[shape].get_function_gradients(psi_g, grad_psi);
+          for (const auto &g : grad_psi)
+            result.min_J_psi =
+              std::min(result.min_J_psi, determinant(unit_symmetric_tensor<3>() + g));
+
+          // Mean ratio of the tetrahedron through the corner nodes of X:
+          // 12 (3 V)^(2/3) / sum of squared edge lengths, 1 if equilateral.
+          cell->get_dof_indices(dof_indices);
+          std::array<Point<3>, 4> p;
+          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+            {
+              const auto [c, node] = fe.system_to_component_index(i);
+              if (node < 4)
+                p[node][c] = X_g(dof_indices[i]);
+            }
+          const double V = ((p[1] - p[0]) * cross_product_3d(p[2] - p[0], p[3] - p[0])) / 6.;
+          double edges = 0;
+          for (unsigned int a = 0; a < 4; ++a)
+            for (unsigned int b = a + 1; b < 4; ++b)
+              edges += (p[a] - p[b]).norm_square();
+          const double quality =
+            V > 0 ? 12. * std::pow(3. * V, 2. / 3.) / edges : V;
+          result.worst_quality = std::min(result.worst_quality, quality);
+        }
+    const MPI_Comm comm  = dofs.get_communicator();
+    result.min_J_psi     = Utilities::MPI::min(result.min_J_psi, comm);
+    result.worst_quality = Utilities::MPI::min(result.worst_quality, comm);
+    return result;
+  }
+
+
+
+  const PETScWrappers::MPI::SparseMatrix &
+  ShapeFilter::tangent() const
+  {
+    return matrix;
+  }
+
+
+
+  const AffineConstraints<double> &
+  ShapeFilter::get_constraints() const
+  {
+    return constraints;
+  }
+
+
+
+  double
+  ShapeFilter::initial_volume() const
+  {
+    return volume;
+  }
+} // namespace softopt

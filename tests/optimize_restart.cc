@@ -1,0 +1,89 @@
+// Checkpoint and restart: a design loop on the sphere octant
+// (inputs/sphere_design.prm, 8 iterations, a mesh update every 3) run
+// without interruption, and the same loop stopped after 5 iterations and
+// restarted from its last checkpoint (at iteration 4, after the mesh update
+// at 3), write the same history.csv. The loop must improve the objective.
+
+#include <softopt/app/output_directory.h>
+#include <softopt/app/settings.h>
+#include <softopt/optimization/shape_optimizer.h>
+
+#include "tests.h"
+
+#include <fstream>
+
+using namespace softopt_tests;
+
+namespace
+{
+  /** Runs the loop with at most @p iterations into @p directory. */
+  void
+  optimize(const std::string &directory, const unsigned int iterations, const bool restart)
+  {
+    softopt::Settings settings(SOURCE_DIR "/inputs/sphere_design.prm");
+    settings.output_directory                 = directory;
+    settings.print_timings                    = false;
+    settings.optimization.maximum_iterations  = iterations;
+    settings.optimization.mesh_update_interval = 3;
+    settings.optimization.checkpoint_interval  = 2;
+    settings.optimization.output_interval      = 0;
+    settings.optimization.move_limit           = 0.1;
+    softopt::DesignProblem        problem(settings);
+    const softopt::OutputDirectory out(settings.output_directory, MPI_COMM_WORLD);
+    softopt::ShapeOptimizer        optimizer(settings, problem, out);
+    std::cout.setstate(std::ios::failbit); // the per-iteration lines
+    optimizer.run(restart);
+    std::cout.clear();
+  }
+
+  /** history.csv without the columns that are timings. */
+  std::vector<std::vector<std::string>>
+  read_history(const std::string &file)
+  {
+    std::ifstream                         in(file);
+    std::vector<std::vector<std::string>> rows;
+    std::vector<std::string>              header;
+    for (std::string line; std::getline(in, line);)
+      {
+        std::vector<std::string> fields = Utilities::split_string_list(line, ',');
+        if (header.empty())
+          header = fields;
+        std::vector<std::string> kept;
+        for (unsigned int i = 0; i < fields.size(); ++i)
+          if (header[i] != "wall_time_s")
+            kept.push_back(fields[i]);
+        rows.push_back(kept);
+      }
+    return rows;
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  TestLog                          log;
+
+  optimize("uninterrupted", 8, false);
+  optimize("interrupted", 5, false);
+  optimize("interrupted", 8, true);
+
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    {
+      const auto a = read_history("uninterrupted/history.csv");
+      const auto b = read_history("interrupted/history.csv");
+      deallog << "rows: " << a.size() - 1 << " and " << b.size() - 1 << std::endl;
+      double largest = 0;
+      for (unsigned int r = 1; r < std::min(a.size(), b.size()); ++r)
+        for (unsigned int c = 1; c < a[r].size(); ++c)
+          {
+            const double x = std::stod(a[r][c]), y = std::stod(b[r][c]);
+            largest = std::max(largest, std::abs(x - y) / std::max(1e-3, std::abs(x)));
+          }
+      deallog << "largest relative difference between the histories "
+              << (largest < 1e-8 ? "below 1e-8" : error(largest)) << std::endl;
+      for (unsigned int r = 1; r < a.size(); ++r)
+        deallog << a[r][0] << ": " << a[0][1] << " " << a[r][1] << "  " << a[0][2]
+                << " " << a[r][2] << "  " << a[0][3] << " " << a[r][3] << std::endl;
+    }
+}
