@@ -85,7 +85,8 @@ namespace softopt
          const Vector      &d,
          const Vector      &X_o,
          const Vector      &psi,
-         const MMA         &mma)
+         const MMA         &mma,
+         const std::map<double, Vector> &states)
     {
       namespace fs     = std::filesystem;
       const auto  comm = d.get_mpi_communicator();
@@ -108,6 +109,12 @@ namespace softopt
         write_vector(out, X_o);
         write_vector(out, psi);
         mma.save(out);
+        write_value<std::uint32_t>(out, states.size());
+        for (const auto &[load_factor, a] : states)
+          {
+            write_value(out, load_factor);
+            write_vector(out, a);
+          }
         AssertThrow(out, ExcMessage("Writing the checkpoint " + file + " failed."));
       }
       // Every rank has written: swap the new checkpoint in.
@@ -130,7 +137,9 @@ namespace softopt
          Vector            &d,
          Vector            &X_o,
          Vector            &psi,
-         MMA               &mma)
+         MMA               &mma,
+         const Vector      &state_template,
+         std::map<double, Vector> &states)
     {
       const auto comm = d.get_mpi_communicator();
       // A run killed between the two renames of save() left ".old".
@@ -158,6 +167,15 @@ namespace softopt
       read_vector(in, X_o, file);
       read_vector(in, psi, file);
       mma.load(in);
+      states.clear();
+      const auto n_states = read_value<std::uint32_t>(in);
+      for (unsigned int i = 0; i < n_states && in; ++i)
+        {
+          const auto load_factor = read_value<double>(in);
+          Vector     a           = state_template;
+          read_vector(in, a, file);
+          states.emplace(load_factor, a);
+        }
       AssertThrow(in, ExcMessage("The checkpoint " + file + " is truncated."));
       return iteration;
     }

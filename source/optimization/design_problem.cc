@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 
 #include <softopt/optimization/design_problem.h>
+#include <softopt/base/step_failure.h>
 #include <softopt/shape/residual_shape_derivative.h>
 
 #include <algorithm>
@@ -73,20 +74,33 @@ namespace softopt
     }
 
     TimerOutput::Scope scope(timer_output, "path following");
-    ConditionalOStream quiet(std::cout, false);
-    const auto         result = settings.loading.run(
-      *problem,
-      settings.newton,
-      targets,
-      [](const PathFollowing::PathPoint &, const Vector &) { return std::string(); },
-      quiet);
-    AssertThrow(result.target_states.size() == targets.size(),
-                ExcMessage("The load path of this design did not reach every "
-                           "target load factor: " +
-                           result.stop_reason));
-    states.clear();
-    for (unsigned int i = 0; i < targets.size(); ++i)
-      states.emplace(result.target_load_factors[i], result.target_states[i]);
+    report     = PathReport();
+    tangent_at = -1;
+    if (settings.optimization.warm_start && warm_start())
+      {
+        report.warm_started = true;
+        tangent_at          = targets.back();
+      }
+    else
+      {
+        ConditionalOStream quiet(std::cout, false);
+        const auto         result = settings.loading.run(
+          *problem,
+          settings.newton,
+          targets,
+          [this](const PathFollowing::PathPoint &point, const Vector &) {
+            report.newton_iterations += point.newton_iterations;
+            return std::string();
+          },
+          quiet);
+        AssertThrow(result.target_states.size() == targets.size(),
+                    ExcMessage("The load path of this design did not reach "
+                               "every target load factor: " +
+                               result.stop_reason));
+        states.clear();
+        for (unsigned int i = 0; i < targets.size(); ++i)
+          states.emplace(result.target_load_factors[i], result.target_states[i]);
+      }
 
     std::vector<double> values;
     for (const auto *f : functionals_)
@@ -102,9 +116,16 @@ namespace softopt
   {
     std::vector<Vector> result(functionals_.size());
     Vector              r, P, dg_da, dg_dX, mu_a, mu_psi;
-    for (const auto &[load_factor, a] : states)
+    // The last target first: after a warm start its tangent is assembled.
+    for (auto target = states.rbegin(); target != states.rend(); ++target)
       {
-        bool factorized = false;
+        const double  load_factor = target->first;
+        const Vector &a           = target->second;
+        // The adjoint of the condensed system shares the tangent at the
+        // target state (symmetric, Eq. adj2). After a warm start the last
+        // target's tangent is assembled and a nearby one factorized.
+        const bool refine     = load_factor == tangent_at;
+        bool       factorized = refine;
         for (unsigned int i = 0; i < functionals_.size(); ++i)
           {
             if (functionals_[i]->load_factor() != load_factor)
@@ -112,15 +133,17 @@ namespace softopt
             if (!factorized)
               {
                 TimerOutput::Scope scope(timer_output, "adjoint: tangent");
-                // The adjoint of the condensed system shares the tangent at
-                // the target state (symmetric, Eq. adj2).
                 problem->assemble(a, load_factor, r, P, true);
                 problem->factorize();
                 factorized = true;
+                tangent_at = -1;
               }
             TimerOutput::Scope scope(timer_output, "adjoint: solves, shape derivatives");
             functionals_[i]->evaluate(*problem, *design, a, &dg_da, &dg_dX);
-            problem->solve(dg_da, mu_a);
+            if (refine)
+              solve_refined(dg_da, mu_a);
+            else
+              problem->solve(dg_da, mu_a);
             // Eq. adj3: (dr_psi/dpsi)^T mu_psi = dg/dpsi - (dr_a/dpsi)^T mu_a
             dg_dX -= residual_shape_derivative(*problem, *design, a, load_factor, mu_a);
             settings.shape_filter.solve_adjoint(dg_dX, mu_psi);
@@ -192,6 +215,68 @@ namespace softopt
   DesignProblem::design_configuration() const
   {
     return *design;
+  }
+
+
+
+  bool
+  DesignProblem::warm_start()
+  {
+    if (states.size() != targets.size())
+      return false;
+    try
+      {
+        for (auto &[load_factor, a] : states) // ascending
+          report.newton_iterations +=
+            settings.newton.solve(*problem, a, load_factor).iterations;
+        return true;
+      }
+    catch (const StepFailure &)
+      {
+        states.clear();
+        report.newton_iterations = 0;
+        return false;
+      }
+  }
+
+
+
+  void
+  DesignProblem::solve_refined(const Vector &b, Vector &x)
+  {
+    const auto &K = problem->tangent();
+    Vector      r = b, dx;
+    x.reinit(b);
+    const double tolerance = 1e-12 * b.l2_norm();
+    for (unsigned int step = 0; step < 10; ++step)
+      {
+        problem->solve(r, dx);
+        x += dx;
+        K.vmult(r, x);
+        r.sadd(-1., b); // r = b - K x
+        if (r.l2_norm() <= tolerance)
+          return;
+      }
+    // The factorization was too far from this tangent.
+    problem->factorize();
+    problem->solve(b, x);
+  }
+
+
+
+  void
+  DesignProblem::set_target_states(const std::map<double, Vector> &new_states)
+  {
+    states     = new_states;
+    tangent_at = -1;
+  }
+
+
+
+  const DesignProblem::PathReport &
+  DesignProblem::path_report() const
+  {
+    return report;
   }
 
 

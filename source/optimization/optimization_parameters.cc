@@ -38,6 +38,15 @@ namespace softopt
                       Patterns::Integer(0),
                       "Every this many iterations the whole state is written "
                       "for \"softopt optimize CASE.prm --restart\" (0: never).");
+    prm.declare_entry("Warm start",
+                      "true",
+                      Patterns::Bool(),
+                      "Start each design's equilibrium solves from the "
+                      "converged states of the previous design at the same "
+                      "target load factors (Newton at fixed load factor), and "
+                      "its adjoint solve from the last Newton factorization; "
+                      "falls back to path following from zero when Newton "
+                      "fails from there (see doc/theory.md).");
     prm.declare_entry("Final analysis steps",
                       "20",
                       Patterns::Integer(1, 10000),
@@ -61,6 +70,7 @@ namespace softopt
     output_interval      = prm.get_integer("Output interval");
     checkpoint_interval  = prm.get_integer("Checkpoint interval");
     final_analysis_steps = prm.get_integer("Final analysis steps");
+    warm_start           = prm.get_bool("Warm start");
     prm.leave_subsection();
   }
 } // namespace softopt

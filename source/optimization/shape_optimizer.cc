@@ -43,7 +43,8 @@ namespace softopt
         for (const auto *f : problem.functionals())
           columns.push_back(f->name());
         for (const auto *c : {"max_design_change_mm", "wall_time_s",
-                              "filter_iterations", "min_J_psi", "worst_quality"})
+                              "newton_iterations", "filter_iterations",
+                              "min_J_psi", "worst_quality"})
           columns.emplace_back(c);
         history = std::make_unique<CsvWriter>(out.file("history.csv"),
                                               columns,
@@ -61,7 +62,7 @@ namespace softopt
         if (k > first && opt.every(k, opt.checkpoint_interval))
           Checkpoint::save(out.path(), k, d,
                            problem.design_configuration().initial_coordinates(),
-                           problem.shape_field(), *mma);
+                           problem.shape_field(), *mma, problem.target_states());
 
         Timer               timer;
         std::vector<double> values;
@@ -133,8 +134,12 @@ namespace softopt
   ShapeOptimizer::resume()
   {
     Vector X_o = problem.create_design_vector(), psi = X_o;
-    const unsigned int k = Checkpoint::load(out.path(), d, X_o, psi, *mma);
+    std::map<double, Vector> states;
+    const unsigned int       k = Checkpoint::load(out.path(), d, X_o, psi, *mma,
+                                            problem.hyperelastic_problem().create_vector(),
+                                            states);
     problem.restore(X_o, psi);
+    problem.set_target_states(states);
 
     // history.csv keeps its header and the rows before the checkpoint.
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
@@ -210,6 +215,7 @@ namespace softopt
       row.push_back(CsvWriter::format(v));
     row.push_back(CsvWriter::format(change));
     row.push_back(CsvWriter::format(wall_time));
+    row.push_back(std::to_string(problem.path_report().newton_iterations));
     row.push_back(std::to_string(health.iterations));
     row.push_back(CsvWriter::format(health.min_J_psi));
     row.push_back(CsvWriter::format(health.worst_quality));
@@ -220,7 +226,9 @@ namespace softopt
       pcout << "  " << problem.functionals()[i]->name() << " "
             << std::setprecision(8) << values[i];
     pcout << "  max|dd| " << std::setprecision(4) << change << " mm  min J_psi "
-          << health.min_J_psi;
+          << health.min_J_psi << "  Newton "
+          << problem.path_report().newton_iterations
+          << (problem.path_report().warm_started ? " (warm)" : "");
     if (settings.print_timings)
       pcout << "  " << std::setprecision(3) << wall_time << " s";
     pcout << std::endl;

@@ -5,6 +5,7 @@
 
 #include <softopt/optimization/mma.h>
 
+#include <map>
 #include <string>
 
 namespace softopt
@@ -16,7 +17,9 @@ namespace softopt
    * to and read from a directory "checkpoint" in the output directory: the
    * iteration number, the design d, the initial coordinates X_o (changed by
    * mesh updates), the shape field psi (the filter's Newton starts there)
-   * and MMA's previous iterates and asymptotes, one binary file per rank.
+   * MMA's previous iterates and asymptotes, and the equilibrium states at
+   * the targets (the next design warm-starts from them), one binary file
+   * per rank.
    * A new checkpoint is written beside the old one and then renamed over
    * it, so a run killed while writing keeps the previous checkpoint. A
    * restart needs the same parameter file and number of MPI ranks.
@@ -35,17 +38,21 @@ namespace softopt
          const Vector      &d,
          const Vector      &X_o,
          const Vector      &psi,
-         const MMA         &mma);
+         const MMA         &mma,
+         const std::map<double, Vector> &states);
 
-    /** Reads the vectors (set up with the partition of this run) and MMA's
-     * state, and returns the iteration to continue with. Throws a message
+    /** Reads the vectors (set up with the partition of this run; the
+     * states like @p state_template) and MMA's state, and returns the
+     * iteration to continue with. Throws a message
      * if there is no checkpoint or it does not fit this run. */
     unsigned int
     load(const std::string &output_directory,
          Vector            &d,
          Vector            &X_o,
          Vector            &psi,
-         MMA               &mma);
+         MMA               &mma,
+         const Vector      &state_template,
+         std::map<double, Vector> &states);
   } // namespace Checkpoint
 } // namespace softopt
 

@@ -90,6 +90,22 @@ namespace softopt
     const DesignConfiguration &
     design_configuration() const;
 
+    /** Sets the states at the targets (a restart: the next evaluate()
+     * warm-starts from them). */
+    void
+    set_target_states(const std::map<double, Vector> &states);
+
+    /** What the last evaluate() did: whether it warm-started, and the
+     * Newton iterations over all targets. */
+    struct PathReport
+    {
+      bool         warm_started      = false;
+      unsigned int newton_iterations = 0;
+    };
+
+    const PathReport &
+    path_report() const;
+
     /** Wall times of the stages (filter, path following, functionals,
      * adjoints), summed over the run. */
     TimerOutput &
@@ -101,6 +117,17 @@ namespace softopt
     target_states() const;
 
   private:
+    /** Newton at each target from the previous design's state there;
+     * false (and the states are void) if Newton fails for one of them. */
+    bool
+    warm_start();
+
+    /** Solves K x = b with the tangent of the last assemble() by iterative
+     * refinement on the factorization the solver holds (from the last
+     * Newton step: a nearby tangent); refactorizes if that stalls. */
+    void
+    solve_refined(const Vector &b, Vector &x);
+
     Settings                                     &settings;
     MPI_Comm                                      comm;
     parallel::fullydistributed::Triangulation<3>  triangulation;
@@ -114,6 +141,10 @@ namespace softopt
     ShapeFilter::Result                           last_filter_result;
     std::map<double, Vector>                      states;
     TimerOutput                                   timer_output;
+    PathReport                                    report;
+    /** The tangent of the last assemble() is at states[load factor]
+     * (negative: unknown). */
+    double tangent_at = -1;
   };
 } // namespace softopt
 

@@ -27,6 +27,7 @@ namespace softopt
     unsigned int output_interval      = 10;
     unsigned int checkpoint_interval  = 10;
     unsigned int final_analysis_steps = 20;
+    bool         warm_start           = true;
 
     /** Whether iteration @p k > 0 is one of every @p interval (0: none). */
     static bool
