@@ -141,7 +141,7 @@ namespace softopt
             TimerOutput::Scope scope(timer_output, "adjoint: solves, shape derivatives");
             functionals_[i]->evaluate(*problem, *design, a, &dg_da, &dg_dX);
             if (refine)
-              solve_refined(dg_da, mu_a);
+              problem->solve_refined(dg_da, mu_a);
             else
               problem->solve(dg_da, mu_a);
             // Eq. adj3: (dr_psi/dpsi)^T mu_psi = dg/dpsi - (dr_a/dpsi)^T mu_a
@@ -228,7 +228,7 @@ namespace softopt
       {
         for (auto &[load_factor, a] : states) // ascending
           report.newton_iterations +=
-            settings.newton.solve(*problem, a, load_factor).iterations;
+            settings.newton.solve(*problem, a, load_factor, true).iterations;
         return true;
       }
     catch (const StepFailure &)
@@ -237,29 +237,6 @@ namespace softopt
         report.newton_iterations = 0;
         return false;
       }
-  }
-
-
-
-  void
-  DesignProblem::solve_refined(const Vector &b, Vector &x)
-  {
-    const auto &K = problem->tangent();
-    Vector      r = b, dx;
-    x.reinit(b);
-    const double tolerance = 1e-12 * b.l2_norm();
-    for (unsigned int step = 0; step < 10; ++step)
-      {
-        problem->solve(r, dx);
-        x += dx;
-        K.vmult(r, x);
-        r.sadd(-1., b); // r = b - K x
-        if (r.l2_norm() <= tolerance)
-          return;
-      }
-    // The factorization was too far from this tangent.
-    problem->factorize();
-    problem->solve(b, x);
   }
 
 

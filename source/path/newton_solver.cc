@@ -73,10 +73,13 @@ namespace softopt
   NewtonSolver::Result
   NewtonSolver::solve(EquilibriumProblem         &problem,
                       EquilibriumProblem::Vector &a,
-                      const double                load_factor) const
+                      const double                load_factor,
+                      const bool                  reuse_factorization) const
   {
     EquilibriumProblem::Vector residual, load, increment;
     Monitor                    monitor(*this);
+    bool   reuse         = reuse_factorization && problem.has_factorization();
+    double previous_norm = 0;
     for (unsigned int iteration = 0;; ++iteration)
       {
         problem.assemble(a, load_factor, residual, load, true);
@@ -85,7 +88,10 @@ namespace softopt
                               norm,
                               std::abs(load_factor) * load.l2_norm()))
           return {iteration, norm};
-        problem.factorize();
+        if (!reuse || (iteration > 0 && norm > 0.25 * previous_norm))
+          problem.factorize();
+        reuse         = reuse_factorization;
+        previous_norm = norm;
         residual *= -1.;
         problem.solve(residual, increment);
         problem.update(a, increment);

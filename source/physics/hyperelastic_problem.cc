@@ -435,6 +435,28 @@ namespace softopt
 
 
 
+  bool
+  HyperelasticProblem::has_factorization() const
+  {
+    return direct_solver.has_factorization();
+  }
+
+
+
+  void
+  HyperelasticProblem::solve_refined(const Vector &b, Vector &x)
+  {
+    Timer              timer;
+    const unsigned int before = direct_solver.n_factorizations();
+    const unsigned int solves = direct_solver.solve_refined(system_matrix, b, x);
+    statistics.n_factorizations += direct_solver.n_factorizations() - before;
+    statistics.n_solves += solves;
+    statistics.solve_time += timer.wall_time();
+    constraints.set_zero(x);
+  }
+
+
+
   unsigned int
   HyperelasticProblem::n_negative_pivots() const
   {

@@ -10,6 +10,8 @@
 #include <softopt/shape/fictitious_material.h>
 #include <softopt/shape/shape_filter.h>
 
+#include <limits>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -144,7 +146,6 @@ namespace softopt
     mass_matrix.compress(VectorOperation::add);
     volume = Utilities::MPI::sum(volume, comm);
     solver = std::make_unique<DirectSolver>(comm);
-    factorized_at_solution = false;
   }
 
 
@@ -240,7 +241,6 @@ namespace softopt
                            "0): the design moved too far for the mesh. Reduce "
                            "the design bound or the move limit, or increase "
                            "G_psi or K_psi (subsection \"Shape filter\")."));
-    factorized_at_solution = false;
     return r;
   }
 
@@ -263,6 +263,11 @@ namespace softopt
     const double tolerance = 1e-10;
     const double round_off = 1e-14 * design->initial_coordinates().linfty_norm();
     bool         small_update = false;
+    // Modified Newton: the factorization kept from the last solve (the
+    // previous design's tangent) serves while it contracts the residual by
+    // at least 4 per step; otherwise the current tangent is factorized.
+    bool   refresh       = !solver->has_factorization();
+    double previous_norm = std::numeric_limits<double>::max();
     for (unsigned int it = 0;; ++it)
       {
         Vector       r    = residual(d, psi, true);
@@ -272,13 +277,19 @@ namespace softopt
             result.iterations = it;
             break;
           }
-        AssertThrow(it < 30 && std::isfinite(norm),
+        AssertThrow(it < 50 && std::isfinite(norm),
                     ExcMessage("The shape filter's Newton iteration did not "
                                "converge (|r| = " +
                                std::to_string(norm) +
                                "): the design is too far from the mesh. Reduce "
                                "the design bound or the move limit."));
-        solver->factorize(matrix);
+        if (refresh || norm > 0.25 * previous_norm)
+          {
+            solver->factorize(matrix);
+            ++result.factorizations;
+          }
+        refresh       = false;
+        previous_norm = norm;
         r *= -1.;
         increment.reinit(r);
         solver->solve(r, increment);
@@ -305,16 +316,11 @@ namespace softopt
   void
   ShapeFilter::solve_adjoint(const Vector &rhs, Vector &mu)
   {
-    // The tangent of the last residual() at the solution; factor it once.
-    if (!factorized_at_solution)
-      {
-        solver->factorize(matrix);
-        factorized_at_solution = true;
-      }
     Vector b = rhs;
     constraints.set_zero(b);
-    mu.reinit(b);
-    solver->solve(b, mu);
+    // The tangent of the last residual() is at the solution; the kept
+    // factorization is of a nearby one.
+    solver->solve_refined(matrix, b, mu);
     constraints.set_zero(mu);
   }
 

@@ -107,6 +107,41 @@ namespace softopt
 
 
   unsigned int
+  DirectSolver::solve_refined(const PETScWrappers::MPI::SparseMatrix &matrix,
+                              const PETScWrappers::MPI::Vector       &b,
+                              PETScWrappers::MPI::Vector             &x,
+                              const double                            tolerance)
+  {
+    if (!has_factorization())
+      factorize(matrix);
+    PETScWrappers::MPI::Vector r = b, dx = b;
+    x.reinit(b);
+    const double goal = tolerance * b.l2_norm();
+    for (unsigned int step = 1; step <= 10; ++step)
+      {
+        solve(r, dx);
+        x += dx;
+        matrix.vmult(r, x);
+        r.sadd(-1., b); // r = b - K x
+        if (r.l2_norm() <= goal)
+          return step;
+      }
+    factorize(matrix);
+    solve(b, x);
+    return 11;
+  }
+
+
+
+  bool
+  DirectSolver::has_factorization() const
+  {
+    return ksp != nullptr;
+  }
+
+
+
+  unsigned int
   DirectSolver::n_negative_pivots() const
   {
     PC  pc;

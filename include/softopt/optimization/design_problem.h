@@ -122,12 +122,6 @@ namespace softopt
     bool
     warm_start();
 
-    /** Solves K x = b with the tangent of the last assemble() by iterative
-     * refinement on the factorization the solver holds (from the last
-     * Newton step: a nearby tangent); refactorizes if that stalls. */
-    void
-    solve_refined(const Vector &b, Vector &x);
-
     Settings                                     &settings;
     MPI_Comm                                      comm;
     parallel::fullydistributed::Triangulation<3>  triangulation;

@@ -57,12 +57,16 @@ namespace softopt
     /**
      * Solves r_a(a, lambda) = 0 starting from @p a. On return the tangent at
      * the converged state is assembled (not yet factorized). Throws
-     * StepFailure when the iteration does not converge.
+     * StepFailure when the iteration does not converge. With
+     * @p reuse_factorization (a warm start from a nearby state), modified
+     * Newton: the factorization the problem holds serves while it
+     * contracts the residual by at least 4 per step.
      */
     Result
     solve(EquilibriumProblem         &problem,
           EquilibriumProblem::Vector &a,
-          const double                load_factor) const;
+          const double                load_factor,
+          const bool                  reuse_factorization = false) const;
 
     /** Relative residual tolerance. */
     double tolerance = 1e-8;

@@ -74,6 +74,9 @@ namespace softopt
     void
     solve(const Vector &b, Vector &x) const override;
 
+    bool
+    has_factorization() const override;
+
     unsigned int
     n_negative_pivots() const override;
 
@@ -83,6 +86,11 @@ namespace softopt
     /** Zeroes the element pressures of @p v. */
     void
     zero_condensed(Vector &v) const override;
+
+    /** x = K^{-1} b for the tangent of the last assemble() by iterative
+     * refinement on the factorization held (DirectSolver::solve_refined). */
+    void
+    solve_refined(const Vector &b, Vector &x);
 
     /** The tangent of the last assemble() (for tests and adjoints). */
     const PETScWrappers::MPI::SparseMatrix &

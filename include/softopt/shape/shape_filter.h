@@ -22,7 +22,8 @@ namespace softopt
    * is Eq. PDEpot02 derived from the potential (the coupling is the volume
    * integral over Omega_o scaled by 1/|Omega_o|, not the surface integral
    * of Eq. PDE04, which contradicts the potential; see doc/theory.md).
-   * Solved by Newton with a MUMPS factorization kept for the adjoint.
+   * Solved by modified Newton on a MUMPS factorization kept between
+   * solves and used for the adjoint.
    */
   class ShapeFilter
   {
@@ -54,6 +55,8 @@ namespace softopt
     struct Result
     {
       unsigned int iterations = 0;
+      /** Of which with a new factorization (modified Newton). */
+      unsigned int factorizations = 0;
       /** The smallest J_psi = det(I + grad psi) at a quadrature point. */
       double min_J_psi = 1;
       /** The worst mean-ratio quality of the tetrahedra of X = X_o + psi
@@ -70,7 +73,7 @@ namespace softopt
     solve(const Vector &d, Vector &psi);
 
     /** Solves (dr_psi/dpsi)^T mu = @p rhs at the last solution (the tangent
-     * is symmetric; its factorization is kept for every right hand side). */
+     * is symmetric), by refinement on the kept factorization. */
     void
     solve_adjoint(const Vector &rhs, Vector &mu);
 
@@ -101,7 +104,6 @@ namespace softopt
     PETScWrappers::MPI::SparseMatrix matrix;
     PETScWrappers::MPI::SparseMatrix mass_matrix;
     std::unique_ptr<DirectSolver>    solver;
-    bool                             factorized_at_solution = false;
     double                           volume                 = 0;
   };
 } // namespace softopt

@@ -39,6 +39,24 @@ namespace softopt
     solve(const PETScWrappers::MPI::Vector &b,
           PETScWrappers::MPI::Vector       &x) const;
 
+    /**
+     * x = K^{-1} b for a @p matrix whose values changed since the last
+     * factorization (a nearby tangent: the last Newton step's, the previous
+     * design's), by iterative refinement x <- x + F^{-1}(b - K x) to a
+     * relative residual of @p tolerance; factorizes @p matrix if there is
+     * no factorization or ten refinements do not get there. Returns the
+     * number of solves with the factorization.
+     */
+    unsigned int
+    solve_refined(const PETScWrappers::MPI::SparseMatrix &matrix,
+                  const PETScWrappers::MPI::Vector       &b,
+                  PETScWrappers::MPI::Vector             &x,
+                  const double                            tolerance = 1e-12);
+
+    /** Whether a factorization is held. */
+    bool
+    has_factorization() const;
+
     /** Negative pivots of the last factorization (MUMPS' INFOG(12)). */
     unsigned int
     n_negative_pivots() const;
