@@ -1,4 +1,5 @@
 #include <softopt/app/settings.h>
+#include <softopt/solvers/direct_solver.h>
 
 namespace softopt
 {
@@ -38,6 +39,7 @@ namespace softopt
     NewtonSolver::declare_parameters(prm);
     ShapeFilter::declare_parameters(prm);
     OptimizationParameters::declare_parameters(prm);
+    DirectSolver::declare_parameters(prm);
     Functionals::declare_parameters(prm, input);
   }
 
@@ -65,6 +67,7 @@ namespace softopt
     newton.parse_parameters(prm);
     shape_filter.parse_parameters(prm, *input);
     optimization.parse_parameters(prm, *input);
+    DirectSolver::parse_parameters(prm);
     functionals = Functionals::create(prm, *input);
   }
 } // namespace softopt

@@ -23,6 +23,37 @@ namespace softopt
 
 
 
+  void
+  DirectSolver::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    prm.declare_entry("MUMPS ordering",
+                      "automatic",
+                      Patterns::Selection("automatic|METIS|PORD|AMD"),
+                      "The fill-reducing ordering of MUMPS' analysis "
+                      "(ICNTL(7)); automatic lets MUMPS choose (PORD here). "
+                      "doc/benchmarks.md compares them on the actuator.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  DirectSolver::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    const std::string ordering = prm.get("MUMPS ordering");
+    prm.leave_subsection();
+    const char *icntl7 = ordering == "METIS" ? "5" :
+                         ordering == "PORD"  ? "4" :
+                         ordering == "AMD"   ? "0" :
+                                               "7";
+    check(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_7", icntl7),
+          "PetscOptionsSetValue");
+  }
+
+
+
   DirectSolver::DirectSolver(const MPI_Comm comm)
     : comm(comm)
   {}

@@ -1,6 +1,7 @@
 #ifndef softopt_solvers_direct_solver_h
 #define softopt_solvers_direct_solver_h
 
+#include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/petsc_sparse_matrix.h>
 #include <deal.II/lac/petsc_vector.h>
 
@@ -23,6 +24,15 @@ namespace softopt
   class DirectSolver
   {
   public:
+    /** subsection "Linear solver": the fill-reducing ordering of MUMPS. */
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    /** Sets the ordering for every factorization of the run (through
+     * PETSc's options database, which MUMPS reads at its analysis). */
+    static void
+    parse_parameters(ParameterHandler &prm);
+
     explicit DirectSolver(const MPI_Comm comm);
     ~DirectSolver();
 
