@@ -6,26 +6,9 @@
 // conditions 0.0624 = 3 lambda c_j / x_j^4 give it in closed form:
 // x_j = c_j^(1/4) (sum_k c_k^(1/4))^(1/3), f0 = 1.339956.
 
-#include <softopt/optimization/mma.h>
-
-#include "tests.h"
+#include "mma_tests.h"
 
 using namespace softopt_tests;
-
-namespace
-{
-  // A number rounded to 6 decimals, without "-0".
-  std::string
-  fixed(const double value)
-  {
-    double r = std::round(value * 1e6) / 1e6;
-    if (r == 0)
-      r = 0;
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(6) << r;
-    return s.str();
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -35,10 +18,8 @@ main(int argc, char **argv)
 
   const MPI_Comm     comm  = MPI_COMM_WORLD;
   const unsigned int n     = 5;
-  const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
-  const unsigned int size  = Utilities::MPI::n_mpi_processes(comm);
-  const unsigned int begin = n * rank / size, end = n * (rank + 1) / size;
-  const unsigned int n_local = end - begin;
+  const LocalRange   local(n, comm);
+  const unsigned int begin = local.begin, n_local = local.size;
 
   const std::vector<double> coefficients = {61, 37, 19, 7, 1};
   const double              weight       = 0.0624;

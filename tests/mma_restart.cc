@@ -4,48 +4,9 @@
 // continue; the iterates must equal those of an uninterrupted run bit for
 // bit. Also: a state with the wrong number of variables is rejected.
 
-#include <softopt/optimization/mma.h>
-
-#include "tests.h"
+#include "mma_tests.h"
 
 using namespace softopt_tests;
-
-namespace
-{
-  const double r           = 1. / std::sqrt(2.);
-  const double e[3][2]     = {{-r, r}, {0, 1}, {r, r}};
-  const double loads[3][2] = {{-r, r}, {0, 2 * r}, {r, r}};
-
-  // The three compliances and the volume constraint, and their gradients,
-  // at the (global) areas x.
-  void
-  evaluate(const std::vector<double>        &x,
-           std::vector<double>              &f,
-           std::vector<std::vector<double>> &df)
-  {
-    f.assign(4, 0.);
-    df.assign(4, std::vector<double>(3));
-    double K[2][2] = {{0, 0}, {0, 0}};
-    for (unsigned int i = 0; i < 3; ++i)
-      for (unsigned int a = 0; a < 2; ++a)
-        for (unsigned int b = 0; b < 2; ++b)
-          K[a][b] += x[i] * e[i][a] * e[i][b];
-    const double det = K[0][0] * K[1][1] - K[0][1] * K[1][0];
-    for (unsigned int l = 0; l < 3; ++l)
-      {
-        const double u[2] = {(K[1][1] * loads[l][0] - K[0][1] * loads[l][1]) /
-                               det,
-                             (K[0][0] * loads[l][1] - K[1][0] * loads[l][0]) /
-                               det};
-        f[l]              = loads[l][0] * u[0] + loads[l][1] * u[1];
-        for (unsigned int i = 0; i < 3; ++i)
-          df[l][i] = -std::pow(e[i][0] * u[0] + e[i][1] * u[1], 2);
-      }
-    f[3] = (x[0] + x[1] + x[2]) / 3. - 1.;
-    for (unsigned int i = 0; i < 3; ++i)
-      df[3][i] = 1. / 3.;
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -54,10 +15,8 @@ main(int argc, char **argv)
   TestLog                          log;
 
   const MPI_Comm     comm  = MPI_COMM_WORLD;
-  const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
-  const unsigned int size  = Utilities::MPI::n_mpi_processes(comm);
-  const unsigned int begin = 3 * rank / size, end = 3 * (rank + 1) / size;
-  const unsigned int n_local = end - begin;
+  const LocalRange   local(3, comm);
+  const unsigned int begin = local.begin, end = local.end, n_local = local.size;
 
   using Row                      = softopt::MMA::RowType;
   const std::vector<Row>    rows = {Row::objective,
@@ -69,22 +28,10 @@ main(int argc, char **argv)
 
   // One MMA iteration on the local part x of the areas.
   auto step = [&](softopt::MMA &mma, std::vector<double> &x) {
-    std::vector<double> x_global;
-    for (const auto &part : Utilities::MPI::all_gather(comm, x))
-      x_global.insert(x_global.end(), part.begin(), part.end());
     std::vector<double>              f;
     std::vector<std::vector<double>> df;
-    evaluate(x_global, f, df);
-    std::vector<ArrayView<const double>> df_local;
-    for (const auto &gradient : df)
-      df_local.emplace_back(gradient.data() + begin, n_local);
-    mma.update(x,
-               0.,
-               ArrayView<const double>(),
-               f,
-               df_local,
-               make_array_view(xmin),
-               make_array_view(xmax));
+    three_bar_truss(gather_all(comm, x), f, df);
+    min_max_update(mma, x, f, df, local, xmin, xmax);
   };
 
   const unsigned int n_before = 4, n_total = 12;
@@ -131,9 +78,7 @@ main(int argc, char **argv)
   deallog << "iteration count: " << mma.n_iterations() << std::endl;
 
   // The areas after n_total iterations (near the optimum 0.75 1.5 0.75).
-  std::vector<double> x_global;
-  for (const auto &part : Utilities::MPI::all_gather(comm, x))
-    x_global.insert(x_global.end(), part.begin(), part.end());
+  const std::vector<double> x_global = gather_all(comm, x);
   deallog << "x =" << std::fixed << std::setprecision(6);
   for (const double xj : x_global)
     deallog << " " << xj;

@@ -16,26 +16,9 @@
 // 8/27 = lambda on every bar: the KKT conditions of this convex problem
 // hold. (A brute-force search over the volume simplex agrees.)
 
-#include <softopt/optimization/mma.h>
-
-#include "tests.h"
+#include "mma_tests.h"
 
 using namespace softopt_tests;
-
-namespace
-{
-  // A number rounded to 6 decimals, without "-0".
-  std::string
-  fixed(const double value)
-  {
-    double r = std::round(value * 1e6) / 1e6;
-    if (r == 0)
-      r = 0;
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(6) << r;
-    return s.str();
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -45,45 +28,19 @@ main(int argc, char **argv)
 
   const MPI_Comm     comm  = MPI_COMM_WORLD;
   const unsigned int n     = 3;
-  const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
-  const unsigned int size  = Utilities::MPI::n_mpi_processes(comm);
-  const unsigned int begin = n * rank / size, end = n * (rank + 1) / size;
-  const unsigned int n_local = end - begin;
+  const LocalRange   local(n, comm);
+  const unsigned int begin = local.begin, end = local.end, n_local = local.size;
 
-  const double              r           = 1. / std::sqrt(2.);
-  const double              e[3][2]     = {{-r, r}, {0, 1}, {r, r}};
-  const double              loads[3][2] = {{-r, r}, {0, 2 * r}, {r, r}};
-  const std::vector<double> x_opt       = {0.75, 1.5, 0.75};
-  const double              c_opt       = 8. / 9.;
+  const std::vector<double> x_opt = {0.75, 1.5, 0.75};
+  const double              c_opt = 8. / 9.;
 
   // Rows 0-2: the compliances (objective rows), row 3: the volume.
-  std::vector<double>              f(4);
-  std::vector<std::vector<double>> df(4, std::vector<double>(n));
+  std::vector<double>              f;
+  std::vector<std::vector<double>> df;
   std::vector<double>              x_global;
   auto evaluate = [&](const std::vector<double> &x) {
-    x_global.clear();
-    for (const auto &part : Utilities::MPI::all_gather(comm, x))
-      x_global.insert(x_global.end(), part.begin(), part.end());
-    double K[2][2] = {{0, 0}, {0, 0}};
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int a = 0; a < 2; ++a)
-        for (unsigned int b = 0; b < 2; ++b)
-          K[a][b] += x_global[i] * e[i][a] * e[i][b];
-    const double det = K[0][0] * K[1][1] - K[0][1] * K[1][0];
-    for (unsigned int l = 0; l < 3; ++l)
-      {
-        const double u[2] = {(K[1][1] * loads[l][0] - K[0][1] * loads[l][1]) /
-                               det,
-                             (K[0][0] * loads[l][1] - K[1][0] * loads[l][0]) /
-                               det};
-        f[l]              = loads[l][0] * u[0] + loads[l][1] * u[1];
-        // dC/dx_i = -u^T dK/dx_i u = -(e_i . u)^2
-        for (unsigned int i = 0; i < n; ++i)
-          df[l][i] = -std::pow(e[i][0] * u[0] + e[i][1] * u[1], 2);
-      }
-    f[3] = (x_global[0] + x_global[1] + x_global[2]) / 3. - 1.;
-    for (unsigned int i = 0; i < n; ++i)
-      df[3][i] = 1. / 3.;
+    x_global = gather_all(comm, x);
+    three_bar_truss(x_global, f, df);
   };
 
   const std::vector<double> x0 = {1.5, 0.5, 1.0};
@@ -107,16 +64,7 @@ main(int argc, char **argv)
   deallog << std::endl;
   for (unsigned int k = 0; k < 100; ++k)
     {
-      std::vector<ArrayView<const double>> df_local;
-      for (const auto &gradient : df)
-        df_local.emplace_back(gradient.data() + begin, n_local);
-      mma.update(x,
-                 0.,
-                 ArrayView<const double>(),
-                 f,
-                 df_local,
-                 make_array_view(xmin),
-                 make_array_view(xmax));
+      min_max_update(mma, x, f, df, local, xmin, xmax);
       evaluate(x);
       if (mma.n_iterations() <= 5)
         {

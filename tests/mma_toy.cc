@@ -7,26 +7,9 @@
 // to 12 digits by Newton's method on the KKT conditions. The variables are
 // split between the MPI ranks.
 
-#include <softopt/optimization/mma.h>
-
-#include "tests.h"
+#include "mma_tests.h"
 
 using namespace softopt_tests;
-
-namespace
-{
-  // A number rounded to 6 decimals, without "-0".
-  std::string
-  fixed(const double value)
-  {
-    double r = std::round(value * 1e6) / 1e6;
-    if (r == 0)
-      r = 0;
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(6) << r;
-    return s.str();
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
@@ -36,9 +19,8 @@ main(int argc, char **argv)
 
   const MPI_Comm     comm  = MPI_COMM_WORLD;
   const unsigned int n     = 3;
-  const unsigned int rank  = Utilities::MPI::this_mpi_process(comm);
-  const unsigned int size  = Utilities::MPI::n_mpi_processes(comm);
-  const unsigned int begin = n * rank / size, end = n * (rank + 1) / size;
+  const LocalRange   local(n, comm);
+  const unsigned int begin = local.begin, end = local.end;
 
   const std::vector<double> x0            = {4, 3, 2};
   const std::vector<double> x_opt         = {2.017518585676,
@@ -59,9 +41,7 @@ main(int argc, char **argv)
   std::vector<std::vector<double>> dg(2, std::vector<double>(n));
   std::vector<double>              x_global;
   auto                             evaluate = [&]() {
-    x_global.clear();
-    for (const auto &part : Utilities::MPI::all_gather(comm, x))
-      x_global.insert(x_global.end(), part.begin(), part.end());
+    x_global = gather_all(comm, x);
     f0 = 0;
     for (unsigned int j = 0; j < n; ++j)
       {

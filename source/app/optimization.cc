@@ -7,7 +7,6 @@
 #include <softopt/io/stl_writer.h>
 #include <softopt/optimization/shape_optimizer.h>
 
-#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 
@@ -78,14 +77,11 @@ namespace softopt
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::filesystem::create_directories(final_directory);
     MPI_Barrier(MPI_COMM_WORLD);
-    std::vector<double> targets = settings.loading.target_load_factors;
+    // The design's targets and equal steps (the path sorts out repeats).
+    std::vector<double> targets = problem.target_load_factors();
     const unsigned int  n       = settings.optimization.final_analysis_steps;
     for (unsigned int i = 1; i <= n; ++i)
       targets.push_back(double(i) / n);
-    for (const auto *f : problem.functionals())
-      targets.push_back(f->load_factor());
-    std::sort(targets.begin(), targets.end());
-    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
     const auto result = follow_load_path(problem.hyperelastic_problem(),
                                          problem.design_configuration(),
                                          settings,

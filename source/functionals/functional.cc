@@ -63,16 +63,32 @@ namespace softopt
       result.add(-factor * top / (area * area), d_area);
     }
 
-    /** g = w / |dOmega^d| int u . v dS (Eq. g0). */
-    class SurfaceObjective : public Functional
+    /**
+     * A weighted mean over the design surface, minus an offset:
+     *   objective  g = w / |dOmega^d| int u . v dS            (Eq. g0),
+     *   constraint f = 1 / |dOmega^d| int (u . s)^2 dS - eps_u (Eq. constraint).
+     */
+    class SurfaceMean : public Functional
     {
     public:
-      SurfaceObjective(const std::string                     &name,
-                       const double                           load_factor,
-                       const double                           weight,
-                       const std::shared_ptr<DirectionField> &field)
-        : Functional(name, Kind::objective, load_factor)
+      /** Which moment of u . v is averaged. */
+      enum class Moment
+      {
+        linear,
+        quadratic
+      };
+
+      SurfaceMean(const std::string                     &name,
+                  const Kind                             kind,
+                  const double                           load_factor,
+                  const Moment                           moment,
+                  const double                           weight,
+                  const double                           offset,
+                  const std::shared_ptr<DirectionField> &field)
+        : Functional(name, kind, load_factor)
+        , moment(moment)
         , weight(weight)
+        , offset(offset)
         , direction(as_function(field))
       {}
 
@@ -86,54 +102,26 @@ namespace softopt
         const bool derivatives = d_da != nullptr;
         const auto s =
           integrate_over_design_surface(problem, design, a, direction, derivatives);
+        const bool   linear = moment == Moment::linear;
+        const double top    = linear ? s.linear : s.quadratic;
         if (derivatives)
           {
-            *d_da = s.d_linear_da;
+            *d_da = linear ? s.d_linear_da : s.d_quadratic_da;
             *d_da *= weight / s.area;
-            quotient_derivative(s.linear, s.area, s.d_linear_dX, s.d_area_dX, weight, *d_dX);
+            quotient_derivative(top,
+                                s.area,
+                                linear ? s.d_linear_dX : s.d_quadratic_dX,
+                                s.d_area_dX,
+                                weight,
+                                *d_dX);
           }
-        return weight * s.linear / s.area;
+        return weight * top / s.area - offset;
       }
 
     private:
+      const Moment                         moment;
       const double                         weight;
-      const CellKernels::DirectionFunction direction;
-    };
-
-    /** f = 1/|dOmega^d| int (u . s)^2 dS - epsilon_u (Eq. constraint). */
-    class SurfaceConstraint : public Functional
-    {
-    public:
-      SurfaceConstraint(const std::string                     &name,
-                        const double                           load_factor,
-                        const double                           tolerance,
-                        const std::shared_ptr<DirectionField> &field)
-        : Functional(name, Kind::constraint, load_factor)
-        , tolerance(tolerance)
-        , direction(as_function(field))
-      {}
-
-      double
-      evaluate(const HyperelasticProblem        &problem,
-               const DesignConfiguration        &design,
-               const PETScWrappers::MPI::Vector &a,
-               PETScWrappers::MPI::Vector       *d_da,
-               PETScWrappers::MPI::Vector       *d_dX) const override
-      {
-        const bool derivatives = d_da != nullptr;
-        const auto s =
-          integrate_over_design_surface(problem, design, a, direction, derivatives);
-        if (derivatives)
-          {
-            *d_da = s.d_quadratic_da;
-            *d_da /= s.area;
-            quotient_derivative(s.quadratic, s.area, s.d_quadratic_dX, s.d_area_dX, 1., *d_dX);
-          }
-        return s.quadratic / s.area - tolerance;
-      }
-
-    private:
-      const double                         tolerance;
+      const double                         offset;
       const CellKernels::DirectionFunction direction;
     };
 
@@ -240,23 +228,30 @@ namespace softopt
     create(ParameterHandler &prm, const InputFile &input)
     {
       std::vector<std::unique_ptr<Functional>> functionals;
+      const auto load_factor_of = [&](const std::string &section) {
+        const double load_factor = prm.get_double("Load factor");
+        AssertThrow(load_factor > 0,
+                    ExcMessage(input.where(section, "Load factor") +
+                               ": must be positive."));
+        return load_factor;
+      };
       for (const unsigned int n : input.numbered_subsections("Objective"))
         {
           const std::string section = "Objective " + std::to_string(n);
           prm.enter_subsection(section);
-          const double load_factor = prm.get_double("Load factor");
-          AssertThrow(load_factor > 0,
-                      ExcMessage(input.where(section, "Load factor") +
-                                 ": must be positive."));
+          const double load_factor = load_factor_of(section);
           const double weight = prm.get_double("Weight");
           if (prm.get("Quantity") == "cavity volume")
             functionals.push_back(std::make_unique<CavityVolume>(
               "g_" + std::to_string(n), load_factor, weight));
           else
-            functionals.push_back(std::make_unique<SurfaceObjective>(
+            functionals.push_back(std::make_unique<SurfaceMean>(
               "g_" + std::to_string(n),
+              Functional::Kind::objective,
               load_factor,
+              SurfaceMean::Moment::linear,
               weight,
+              0.,
               DirectionFields::create(prm, input, section)));
           prm.leave_subsection();
         }
@@ -264,13 +259,13 @@ namespace softopt
         {
           const std::string section = "Constraint " + std::to_string(n);
           prm.enter_subsection(section);
-          const double load_factor = prm.get_double("Load factor");
-          AssertThrow(load_factor > 0,
-                      ExcMessage(input.where(section, "Load factor") +
-                                 ": must be positive."));
-          functionals.push_back(std::make_unique<SurfaceConstraint>(
+          const double load_factor = load_factor_of(section);
+          functionals.push_back(std::make_unique<SurfaceMean>(
             "f_" + std::to_string(n),
+            Functional::Kind::constraint,
             load_factor,
+            SurfaceMean::Moment::quadratic,
+            1.,
             prm.get_double("Tolerance"),
             DirectionFields::create(prm, input, section)));
           prm.leave_subsection();

@@ -55,6 +55,14 @@ namespace softopt
 
 
 
+  const std::vector<double> &
+  DesignProblem::target_load_factors() const
+  {
+    return targets;
+  }
+
+
+
   const std::vector<const Functional *> &
   DesignProblem::functionals() const
   {

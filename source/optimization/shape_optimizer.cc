@@ -169,14 +169,16 @@ namespace softopt
     // The min-max form needs positive objective rows (z >= 0): shifting
     // every g_i by the same constant C only moves z, and C above the
     // largest |g_i| keeps the bound z >= 0 inactive.
+    const auto is_objective = [&](const unsigned int i) {
+      return problem.functionals()[i]->kind() == Functional::Kind::objective;
+    };
     double shift = 1;
     for (unsigned int i = 0; i < values.size(); ++i)
-      if (problem.functionals()[i]->kind() == Functional::Kind::objective)
+      if (is_objective(i))
         shift = std::max(shift, 1 + 2 * std::abs(values[i]));
     std::vector<double> rows = values;
     for (unsigned int i = 0; i < values.size(); ++i)
-      if (problem.functionals()[i]->kind() == Functional::Kind::objective)
-        rows[i] += shift;
+      rows[i] += is_objective(i) ? shift : 0.;
 
     const IndexSet owned = d.locally_owned_elements();
     const std::vector<types::global_dof_index> indices(owned.begin(), owned.end());

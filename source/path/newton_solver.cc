@@ -1,5 +1,6 @@
 #include <softopt/base/step_failure.h>
 #include <softopt/path/newton_solver.h>
+#include <softopt/solvers/refactorization_rule.h>
 
 #include <cmath>
 #include <sstream>
@@ -78,8 +79,7 @@ namespace softopt
   {
     EquilibriumProblem::Vector residual, load, increment;
     Monitor                    monitor(*this);
-    bool   reuse         = reuse_factorization && problem.has_factorization();
-    double previous_norm = 0;
+    RefactorizationRule rule(reuse_factorization, problem.has_factorization());
     for (unsigned int iteration = 0;; ++iteration)
       {
         problem.assemble(a, load_factor, residual, load, true);
@@ -88,10 +88,8 @@ namespace softopt
                               norm,
                               std::abs(load_factor) * load.l2_norm()))
           return {iteration, norm};
-        if (!reuse || (iteration > 0 && norm > 0.25 * previous_norm))
+        if (rule.refactorize(norm))
           problem.factorize();
-        reuse         = reuse_factorization;
-        previous_norm = norm;
         residual *= -1.;
         problem.solve(residual, increment);
         problem.update(a, increment);

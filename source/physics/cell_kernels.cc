@@ -271,6 +271,18 @@ namespace softopt
       {
         return v;
       }
+
+      /** mu . v over the ten nodes of a cell: the adjoint-weighted sum
+       * whose derivative is mu^T dv/dX. */
+      AD
+      contract(const NodalVectors &mu, const Nodes<AD> &v)
+      {
+        AD sum = 0;
+        for (unsigned int a = 0; a < 10; ++a)
+          for (unsigned int i = 0; i < 3; ++i)
+            sum += mu[a][i] * v[a][i];
+        return sum;
+      }
     } // namespace
 
 
@@ -293,12 +305,8 @@ namespace softopt
                                         const NodalVectors         &X,
                                         const NodalVectors         &mu)
     {
-      const Nodes<AD> r = residual(reference, material, u, independent(X));
-      AD              mu_r = 0;
-      for (unsigned int a = 0; a < 10; ++a)
-        for (unsigned int i = 0; i < 3; ++i)
-          mu_r += mu[a][i] * r[a][i];
-      return derivatives(mu_r);
+      return derivatives(
+        contract(mu, residual(reference, material, u, independent(X))));
     }
 
 
@@ -321,12 +329,7 @@ namespace softopt
                              const NodalVectors         &x,
                              const NodalVectors         &mu)
     {
-      const Nodes<AD> f    = load(reference, face, p_hat, independent(x));
-      AD              mu_f = 0;
-      for (unsigned int a = 0; a < 10; ++a)
-        for (unsigned int i = 0; i < 3; ++i)
-          mu_f += mu[a][i] * f[a][i];
-      return derivatives(mu_f);
+      return derivatives(contract(mu, load(reference, face, p_hat, independent(x))));
     }
 
 

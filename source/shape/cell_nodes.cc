@@ -21,6 +21,27 @@ namespace softopt
         }
       return result;
     }
+
+    NodalVectors
+    gather(const std::array<std::array<types::global_dof_index, 3>, 10> &dofs,
+           const PETScWrappers::MPI::Vector                             &v)
+    {
+      NodalVectors values;
+      for (unsigned int n = 0; n < 10; ++n)
+        for (unsigned int c = 0; c < 3; ++c)
+          values[n][c] = v(dofs[n][c]);
+      return values;
+    }
+
+    void
+    scatter_add(const std::array<std::array<types::global_dof_index, 3>, 10> &dofs,
+                const NodalVectors                                           &values,
+                PETScWrappers::MPI::Vector                                   &v)
+    {
+      for (unsigned int n = 0; n < 10; ++n)
+        for (unsigned int c = 0; c < 3; ++c)
+          v(dofs[n][c]) += values[n][c];
+    }
   } // namespace
 
 
@@ -37,11 +58,7 @@ namespace softopt
   NodalVectors
   CellNodes::displacement(const PETScWrappers::MPI::Vector &a) const
   {
-    NodalVectors u;
-    for (unsigned int n = 0; n < 10; ++n)
-      for (unsigned int c = 0; c < 3; ++c)
-        u[n][c] = a(u_dofs[n][c]);
-    return u;
+    return gather(u_dofs, a);
   }
 
 
@@ -49,11 +66,7 @@ namespace softopt
   NodalVectors
   CellNodes::design(const PETScWrappers::MPI::Vector &X) const
   {
-    NodalVectors x;
-    for (unsigned int n = 0; n < 10; ++n)
-      for (unsigned int c = 0; c < 3; ++c)
-        x[n][c] = X(X_dofs[n][c]);
-    return x;
+    return gather(X_dofs, X);
   }
 
 
@@ -62,9 +75,7 @@ namespace softopt
   CellNodes::add_to_displacement(const NodalVectors         &values,
                                  PETScWrappers::MPI::Vector &v) const
   {
-    for (unsigned int n = 0; n < 10; ++n)
-      for (unsigned int c = 0; c < 3; ++c)
-        v(u_dofs[n][c]) += values[n][c];
+    scatter_add(u_dofs, values, v);
   }
 
 
@@ -73,9 +84,7 @@ namespace softopt
   CellNodes::add_to_design(const NodalVectors         &values,
                            PETScWrappers::MPI::Vector &v) const
   {
-    for (unsigned int n = 0; n < 10; ++n)
-      for (unsigned int c = 0; c < 3; ++c)
-        v(X_dofs[n][c]) += values[n][c];
+    scatter_add(X_dofs, values, v);
   }
 
 

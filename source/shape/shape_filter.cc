@@ -9,8 +9,7 @@
 
 #include <softopt/shape/fictitious_material.h>
 #include <softopt/shape/shape_filter.h>
-
-#include <limits>
+#include <softopt/solvers/refactorization_rule.h>
 
 #include <algorithm>
 #include <cmath>
@@ -263,11 +262,9 @@ namespace softopt
     const double tolerance = 1e-10;
     const double round_off = 1e-14 * design->initial_coordinates().linfty_norm();
     bool         small_update = false;
-    // Modified Newton: the factorization kept from the last solve (the
-    // previous design's tangent) serves while it contracts the residual by
-    // at least 4 per step; otherwise the current tangent is factorized.
-    bool   refresh       = !solver->has_factorization();
-    double previous_norm = std::numeric_limits<double>::max();
+    // Modified Newton on the factorization kept from the last solve (the
+    // previous design's tangent).
+    RefactorizationRule rule(true, solver->has_factorization());
     for (unsigned int it = 0;; ++it)
       {
         Vector       r    = residual(d, psi, true);
@@ -283,13 +280,8 @@ namespace softopt
                                std::to_string(norm) +
                                "): the design is too far from the mesh. Reduce "
                                "the design bound or the move limit."));
-        if (refresh || norm > 0.25 * previous_norm)
-          {
-            solver->factorize(matrix);
-            ++result.factorizations;
-          }
-        refresh       = false;
-        previous_norm = norm;
+        if (rule.refactorize(norm))
+          solver->factorize(matrix);
         r *= -1.;
         increment.reinit(r);
         solver->solve(r, increment);

@@ -42,6 +42,11 @@ namespace softopt
     void
     add_cavity_volume();
 
+    /** The union of "Target load factors" and the functionals' load
+     * factors, ascending. */
+    const std::vector<double> &
+    target_load_factors() const;
+
     /** The file's objectives and constraints (and "V" if added), in order. */
     const std::vector<const Functional *> &
     functionals() const;

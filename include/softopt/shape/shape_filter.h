@@ -55,8 +55,6 @@ namespace softopt
     struct Result
     {
       unsigned int iterations = 0;
-      /** Of which with a new factorization (modified Newton). */
-      unsigned int factorizations = 0;
       /** The smallest J_psi = det(I + grad psi) at a quadrature point. */
       double min_J_psi = 1;
       /** The worst mean-ratio quality of the tetrahedra of X = X_o + psi

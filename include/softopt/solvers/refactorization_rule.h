@@ -1,0 +1,41 @@
+#ifndef softopt_solvers_refactorization_rule_h
+#define softopt_solvers_refactorization_rule_h
+
+#include <limits>
+
+namespace softopt
+{
+  /**
+   * When a modified Newton iteration factorizes its tangent anew: a kept
+   * factorization (of the previous design's tangent, or of an earlier
+   * step) serves while it reduces the residual by at least a factor 4 per
+   * step. Without reuse every step factorizes (plain Newton). Shared by
+   * the warm-started equilibrium solves and the shape filter.
+   */
+  class RefactorizationRule
+  {
+  public:
+    RefactorizationRule(const bool reuse, const bool have_factorization)
+      : reuse(reuse)
+      , have_factorization(have_factorization)
+    {}
+
+    /** Call once per step with its residual norm, before the solve. */
+    bool
+    refactorize(const double residual_norm)
+    {
+      const bool result =
+        !reuse || !have_factorization || residual_norm > 0.25 * previous_norm;
+      have_factorization = true;
+      previous_norm      = residual_norm;
+      return result;
+    }
+
+  private:
+    const bool reuse;
+    bool       have_factorization;
+    double     previous_norm = std::numeric_limits<double>::infinity();
+  };
+} // namespace softopt
+
+#endif
