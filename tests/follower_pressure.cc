@@ -31,10 +31,10 @@ main(int argc, char **argv)
   geometry.create_triangulation(triangulation);
 
   const softopt::DesignConfiguration design(triangulation, geometry);
-  const softopt::NeoHookeanMixed     material(1.2, 0.49);
+  const auto material = neo_hookean(1.2, 0.49);
   const double                       p_hat = 0.015;
   softopt::HyperelasticProblem       problem(
-    triangulation, design.get_mapping(), geometry, material, p_hat);
+    triangulation, design.get_mapping(), geometry, *material, p_hat);
   problem.setup_system();
 
   const IndexSet pressure_dofs = DoFTools::extract_dofs(

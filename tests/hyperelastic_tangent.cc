@@ -30,8 +30,8 @@ main(int argc, char **argv)
   geometry.dirichlet_boundaries  = {{0, {{true, true, true}}}};
   geometry.pressure_boundary_ids = {1};
   const MappingFE<3>             mapping(FE_SimplexP<3>(1));
-  const softopt::NeoHookeanMixed material(1.2, 0.49);
-  softopt::HyperelasticProblem   problem(triangulation, mapping, geometry, material, 0.1);
+  const auto                   material = neo_hookean(1.2, 0.49);
+  softopt::HyperelasticProblem problem(triangulation, mapping, geometry, *material, 0.1);
   problem.setup_system();
 
   // Perturb only displacement DoFs that are not constrained: the element

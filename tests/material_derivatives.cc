@@ -1,20 +1,19 @@
-// The neo-Hookean mixed material: the stress P = dW~/dF and the tangent
-// A = dP/dF against central finite differences, and dW~/dp~ against the
-// pressure equation, at a few deformations with J far from and close to 1.
+// Every material model in its mixed form: the stress P = dW~/dF and the
+// tangent A = dP/dF against central finite differences, and dW~/dp~ against
+// the pressure equation, at a few deformations with J far from and close
+// to 1; and Hooke's law at small strain with the model's G_0 and K.
+// A new model is added to the list in main().
 
-#include <softopt/physics/neo_hookean_mixed.h>
+#include <softopt/physics/hyperelastic_parts.h>
+#include <softopt/physics/material.h>
 
 #include "tests.h"
 
 using namespace softopt_tests;
 
-int
-main(int argc, char **argv)
+void
+check(const softopt::Material &material)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  TestLog                          log;
-
-  const softopt::NeoHookeanMixed material(1.2, 0.49);
   for (unsigned int sample = 0; sample < 4; ++sample)
     {
       Tensor<2, 3> F;
@@ -63,6 +62,35 @@ main(int argc, char **argv)
               << std::endl;
     }
 
+  // At small strain the law reduces to Hooke's, sigma = 2G eps + lambda
+  // tr(eps) I, with p~ = -K tr(eps) from the pressure equation.
+  const double eps = 1e-7;
+  Tensor<2, 3> F   = unit_symmetric_tensor<3>();
+  F[0][0] += eps;
+  const double       p     = -material.bulk_modulus * eps;
+  const Tensor<2, 3> sigma = material.cauchy_stress(F, p);
+  const double lame = material.bulk_modulus - 2. / 3. * material.shear_modulus;
+  deallog << "uniaxial strain: sigma_xx / eps = " << sigma[0][0] / eps
+          << " (expected " << 2 * material.shear_modulus + lame
+          << "), sigma_yy / eps = " << sigma[1][1] / eps << " (expected "
+          << lame << ")" << std::endl;
+}
+
+
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  TestLog                          log;
+
+  deallog << "neo-Hookean, E = 1.2, nu = 0.49" << std::endl;
+  check(*neo_hookean(1.2, 0.49));
+  deallog << "Yeoh, C = (0.2, 0.05, 0.01), nu = 0.49" << std::endl;
+  check(*softopt::Materials::create("Yeoh",
+                                    {{"Yeoh coefficients", "0.2, 0.05, 0.01"},
+                                     {"Poisson's ratio", "0.49"}}));
+
   // J - 1 from the invariants of H keeps its digits where det(F) - 1 cannot.
   Tensor<2, 3> H;
   for (unsigned int i = 0; i < 3; ++i)
@@ -86,17 +114,4 @@ main(int argc, char **argv)
   deallog << "|H| = 1e-7: relative error of jacobian_minus_one "
           << below(softopt::jacobian_minus_one(H)) << ", of det(F) - 1 "
           << below(naive) << std::endl;
-
-  // At small strain the law reduces to Hooke's, sigma = 2G eps + lambda
-  // tr(eps) I, with p~ = -K tr(eps) from the pressure equation.
-  const double eps = 1e-7;
-  Tensor<2, 3> F   = unit_symmetric_tensor<3>();
-  F[0][0] += eps;
-  const double       p     = -material.bulk_modulus * eps;
-  const Tensor<2, 3> sigma = material.cauchy_stress(F, p);
-  const double lame = material.bulk_modulus - 2. / 3. * material.shear_modulus;
-  deallog << "uniaxial strain: sigma_xx / eps = " << sigma[0][0] / eps
-          << " (expected " << 2 * material.shear_modulus + lame
-          << "), sigma_yy / eps = " << sigma[1][1] / eps << " (expected "
-          << lame << ")" << std::endl;
 }

@@ -1,7 +1,11 @@
 // The thick-walled sphere octant of the verification tests, and the closed
 // form of its inflation (incompressible neo-Hookean):
 //   p/mu = [2/lambda_b + 1/(2 lambda_b^4)] - [2/lambda_a + 1/(2 lambda_a^4)],
-//   lambda_b^3 = 1 + (lambda_a^3 - 1) (A/B)^3.
+//   lambda_b^3 = 1 + (lambda_a^3 - 1) (A/B)^3,
+// and for any incompressible W(I1^), with the equibiaxial stretch lambda at
+// radius r (I1^ = 2 lambda^2 + lambda^-4),
+//   p = int_{lambda_b}^{lambda_a} 4 W'(I1^) (lambda^3 + 1) / lambda^5 dlambda,
+// which is the neo-Hookean form for W' = mu/2.
 #ifndef softopt_tests_sphere_h
 #define softopt_tests_sphere_h
 
@@ -13,6 +17,7 @@
 
 #include "tests.h"
 
+#include <functional>
 #include <memory>
 
 namespace softopt_tests
@@ -26,33 +31,78 @@ namespace softopt_tests
     return f(lambda_b) - f(lambda_a);
   }
 
-  /** lambda_a at p/mu on the ascending branch (bisection). */
+  /** p for an incompressible W(I1^) with W' = dW_dI1 (composite Gauss,
+   * 20 intervals of 4 points: round-off for these smooth integrands). */
   inline double
-  closed_form_stretch(const double p_over_mu, const double ratio)
+  closed_form_pressure(const double                          lambda_a,
+                       const double                          ratio,
+                       const std::function<double(double)> &dW_dI1)
+  {
+    const double lambda_b =
+      std::cbrt(1 + (std::pow(lambda_a, 3) - 1) * std::pow(ratio, 3));
+    const double x[4] = {-0.8611363115940526, -0.3399810435848563,
+                         0.3399810435848563,  0.8611363115940526};
+    const double w[4] = {0.3478548451374538, 0.6521451548625461,
+                         0.6521451548625461, 0.3478548451374538};
+    const unsigned int n = 20;
+    const double       h = (lambda_a - lambda_b) / n;
+    double             p = 0;
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int q = 0; q < 4; ++q)
+        {
+          const double s = lambda_b + h * (i + 0.5 + 0.5 * x[q]);
+          p += 0.5 * h * w[q] * 4 * dW_dI1(2 * s * s + std::pow(s, -4)) *
+               (s * s * s + 1) / std::pow(s, 5);
+        }
+    return p;
+  }
+
+  /** lambda_a at pressure p (bisection on the ascending branch). */
+  inline double
+  closed_form_stretch(const double                         p,
+                      const std::function<double(double)> &pressure)
   {
     double low = 1, high = 1;
-    while (closed_form_pressure(high, ratio) < p_over_mu)
+    while (pressure(high) < p)
       high += 0.1;
     for (unsigned int i = 0; i < 200; ++i)
       {
         const double mid = (low + high) / 2;
-        (closed_form_pressure(mid, ratio) < p_over_mu ? low : high) = mid;
+        (pressure(mid) < p ? low : high) = mid;
       }
     return (low + high) / 2;
+  }
+
+  /** lambda_a at p/mu on the ascending branch (neo-Hookean). */
+  inline double
+  closed_form_stretch(const double p_over_mu, const double ratio)
+  {
+    return closed_form_stretch(p_over_mu, [ratio](const double lambda_a) {
+      return closed_form_pressure(lambda_a, ratio);
+    });
   }
 
   /** The sphere octant with inner radius A and outer radius B, meshed at h,
    * pressurized with p_over_mu times its shear modulus at load factor 1. */
   struct Sphere
   {
+    /** Of the neo-Hookean material with E and nu. */
     Sphere(const double A,
            const double B,
            const double h,
            const double youngs_modulus,
            const double nu,
            const double p_over_mu)
+      : Sphere(A, B, h, neo_hookean(youngs_modulus, nu), p_over_mu)
+    {}
+
+    Sphere(const double                                    A,
+           const double                                    B,
+           const double                                    h,
+           const std::shared_ptr<const softopt::Material> &material,
+           const double                                    p_over_mu)
       : triangulation(MPI_COMM_WORLD)
-      , material(youngs_modulus, nu)
+      , material(material)
     {
       geometry.mesh_file            = SOURCE_DIR "/../meshes/sphere_octant.geo";
       geometry.mesh_size            = h;
@@ -68,8 +118,8 @@ namespace softopt_tests
         triangulation,
         design->get_mapping(),
         geometry,
-        material,
-        p_over_mu * material.shear_modulus);
+        *material,
+        p_over_mu * material->shear_modulus);
       problem->setup_system();
       initial_volume =
         softopt::cavity_volume(*problem, *design, problem->create_vector());
@@ -84,7 +134,7 @@ namespace softopt_tests
 
     parallel::fullydistributed::Triangulation<3>  triangulation;
     softopt::Geometry                             geometry;
-    const softopt::NeoHookeanMixed                material;
+    std::shared_ptr<const softopt::Material>      material;
     std::unique_ptr<softopt::DesignConfiguration> design;
     std::unique_ptr<softopt::HyperelasticProblem> problem;
     double                                        initial_volume;

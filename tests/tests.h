@@ -10,6 +10,7 @@
 #include <deal.II/grid/tria.h>
 
 #include <softopt/geometry/geometry.h>
+#include <softopt/physics/material.h>
 
 #include <cmath>
 #include <fstream>
@@ -43,6 +44,16 @@ namespace softopt_tests
   private:
     std::ofstream file;
   };
+
+  /** The paper's material with E (MPa) and nu. */
+  inline std::shared_ptr<const softopt::Material>
+  neo_hookean(const double youngs_modulus, const double nu)
+  {
+    return softopt::Materials::create(
+      "neo-Hookean",
+      {{"Young's modulus", Utilities::to_string(youngs_modulus)},
+       {"Poisson's ratio", Utilities::to_string(nu)}});
+  }
 
   /** A number with two significant digits (for errors that must be small). */
   inline std::string

@@ -131,12 +131,10 @@ namespace softopt
     parallel::fullydistributed::Triangulation<3> triangulation(comm);
     settings.geometry.create_triangulation(triangulation);
     const DesignConfiguration design(triangulation, settings.geometry);
-    const NeoHookeanMixed material(settings.material.youngs_modulus,
-                                   settings.material.poissons_ratio);
     HyperelasticProblem   problem(triangulation,
                                 design.get_mapping(),
                                 settings.geometry,
-                                material,
+                                *settings.material,
                                 settings.loading.pressure_kPa * 1e-3);
     problem.setup_system();
     pcout << "Mesh: " << triangulation.n_global_active_cells()

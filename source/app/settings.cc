@@ -34,7 +34,7 @@ namespace softopt
     prm.leave_subsection();
 
     Geometry::declare_parameters(prm);
-    MaterialParameters::declare_parameters(prm);
+    Materials::declare_parameters(prm);
     PathFollowing::declare_parameters(prm);
     NewtonSolver::declare_parameters(prm);
     ShapeFilter::declare_parameters(prm);
@@ -62,7 +62,7 @@ namespace softopt
     prm.leave_subsection();
 
     geometry.parse_parameters(prm, *input);
-    material.parse_parameters(prm, *input);
+    material = Materials::create(prm, *input);
     loading.parse_parameters(prm, *input);
     newton.parse_parameters(prm);
     shape_filter.parse_parameters(prm, *input);

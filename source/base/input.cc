@@ -22,6 +22,17 @@ namespace softopt
 
 
 
+  InputFile
+  InputFile::in_code(const std::string &description)
+  {
+    InputFile input;
+    input.file_path = description;
+    input.folder    = std::filesystem::current_path().string();
+    return input;
+  }
+
+
+
   const std::string &
   InputFile::path() const
   {

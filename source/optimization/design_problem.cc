@@ -16,12 +16,10 @@ namespace softopt
   {
     settings.geometry.create_triangulation(triangulation);
     design   = std::make_unique<DesignConfiguration>(triangulation, settings.geometry);
-    material = std::make_unique<NeoHookeanMixed>(settings.material.youngs_modulus,
-                                                 settings.material.poissons_ratio);
     problem  = std::make_unique<HyperelasticProblem>(triangulation,
                                                     design->get_mapping(),
                                                     settings.geometry,
-                                                    *material,
+                                                    *settings.material,
                                                     settings.loading.pressure_kPa * 1e-3);
     problem->setup_system();
     settings.shape_filter.setup(*design, settings.geometry);

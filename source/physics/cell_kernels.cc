@@ -122,10 +122,51 @@ namespace softopt
         return cross_product_3d(xs, xt);
       }
 
+      /** P(F, p~) for plain numbers. */
+      Tensor<2, 3>
+      first_piola(const Material &material, const Tensor<2, 3> &F, const double p)
+      {
+        return material.first_piola(F, p);
+      }
+
+      /** P(F, p~) with derivatives dP = A : dF + dP/dp~ dp~ from the
+       * material's tangent, so that a material model needs no AD code. */
+      Tensor<2, 3, AD>
+      first_piola(const Material &material, const Tensor<2, 3, AD> &F, const AD &p)
+      {
+        Tensor<2, 3> F_value;
+        int          n = p.size();
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            {
+              F_value[i][j] = F[i][j].val();
+              n             = std::max(n, F[i][j].size());
+            }
+        const Tensor<2, 3> P        = material.first_piola(F_value, p.val());
+        const Tensor<4, 3> A        = material.tangent(F_value, p.val());
+        const Tensor<2, 3> coupling = material.pressure_coupling(F_value);
+        Tensor<2, 3, AD>   result;
+        for (unsigned int i = 0; i < 3; ++i)
+          for (unsigned int j = 0; j < 3; ++j)
+            result[i][j] = AD(n, P[i][j]);
+        for (int d = 0; d < n; ++d)
+          {
+            Tensor<2, 3> dF;
+            for (unsigned int k = 0; k < 3; ++k)
+              for (unsigned int l = 0; l < 3; ++l)
+                dF[k][l] = F[k][l].dx(d);
+            for (unsigned int i = 0; i < 3; ++i)
+              for (unsigned int j = 0; j < 3; ++j)
+                result[i][j].fastAccessDx(d) =
+                  scalar_product(A[i][j], dF) + coupling[i][j] * p.dx(d);
+          }
+        return result;
+      }
+
       template <typename Number>
       Nodes<Number>
       residual(const ReferenceTetrahedron &reference,
-               const NeoHookeanMixed      &material,
+               const Material      &material,
                const NodalVectors         &u,
                const Nodes<Number>        &X)
       {
@@ -159,7 +200,7 @@ namespace softopt
             Tensor<2, 3, Number> F = H[q];
             for (unsigned int i = 0; i < 3; ++i)
               F[i][i] += 1.;
-            const Tensor<2, 3, Number> P = material.first_piola(F, p);
+            const Tensor<2, 3, Number> P = first_piola(material, F, p);
             for (unsigned int a = 0; a < 10; ++a)
               {
                 const Tensor<1, 3, Number> force = P * grad_N[q][a];
@@ -203,12 +244,6 @@ namespace softopt
             V -= xn * point.weight / 3.;
           }
         return V;
-      }
-
-      double
-      value_of(const double x)
-      {
-        return x;
       }
 
       double
@@ -289,7 +324,7 @@ namespace softopt
 
     NodalVectors
     condensed_residual(const ReferenceTetrahedron &reference,
-                       const NeoHookeanMixed      &material,
+                       const Material      &material,
                        const NodalVectors         &u,
                        const NodalVectors         &X)
     {
@@ -300,7 +335,7 @@ namespace softopt
 
     NodalVectors
     condensed_residual_shape_derivative(const ReferenceTetrahedron &reference,
-                                        const NeoHookeanMixed      &material,
+                                        const Material      &material,
                                         const NodalVectors         &u,
                                         const NodalVectors         &X,
                                         const NodalVectors         &mu)

@@ -35,7 +35,7 @@ namespace softopt
     const Triangulation<3> &triangulation,
     const Mapping<3>       &mapping,
     const Geometry         &geometry,
-    const NeoHookeanMixed  &material,
+    const Material  &material,
     const double            pressure)
     : triangulation_comm(triangulation.get_communicator())
     , triangulation(triangulation)
@@ -652,7 +652,7 @@ namespace softopt
     return fe;
   }
 
-  const NeoHookeanMixed &
+  const Material &
   HyperelasticProblem::get_material() const
   {
     return material;

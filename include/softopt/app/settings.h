@@ -9,7 +9,7 @@
 #include <softopt/path/newton_solver.h>
 #include <softopt/path/path_following.h>
 #include <softopt/optimization/optimization_parameters.h>
-#include <softopt/physics/material_parameters.h>
+#include <softopt/physics/material.h>
 #include <softopt/shape/shape_filter.h>
 
 #include <memory>
@@ -50,7 +50,8 @@ namespace softopt
     } vtu_output = VtuOutput::every_step;
 
     Geometry           geometry;
-    MaterialParameters material;
+    /** subsection Material: the registered model it names. */
+    std::shared_ptr<const Material> material;
     PathFollowing      loading;
     NewtonSolver       newton;
     ShapeFilter        shape_filter;

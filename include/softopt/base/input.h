@@ -25,6 +25,11 @@ namespace softopt
     /** Checks that @p path can be read; throws a message naming it if not. */
     explicit InputFile(const std::string &path);
 
+    /** Entries that come from code rather than a file (tests, scripts):
+     * messages name @p description instead of a file. */
+    static InputFile
+    in_code(const std::string &description);
+
     /** The path as given on the command line. */
     const std::string &path() const;
 
@@ -44,6 +49,8 @@ namespace softopt
     where(const std::string &subsection, const std::string &entry) const;
 
   private:
+    InputFile() = default;
+
     std::string file_path;
     std::string folder;
   };

@@ -131,7 +131,6 @@ namespace softopt
     MPI_Comm                                      comm;
     parallel::fullydistributed::Triangulation<3>  triangulation;
     std::unique_ptr<DesignConfiguration>          design;
-    std::unique_ptr<NeoHookeanMixed>              material;
     std::unique_ptr<HyperelasticProblem>          problem;
     std::vector<const Functional *>               functionals_;
     std::unique_ptr<Functional>                   volume;

@@ -4,7 +4,7 @@
 #include <deal.II/base/quadrature.h>
 #include <deal.II/base/tensor.h>
 
-#include <softopt/physics/neo_hookean_mixed.h>
+#include <softopt/physics/material.h>
 
 #include <array>
 #include <functional>
@@ -61,14 +61,14 @@ namespace softopt
      */
     NodalVectors
     condensed_residual(const ReferenceTetrahedron &reference,
-                       const NeoHookeanMixed      &material,
+                       const Material      &material,
                        const NodalVectors         &u,
                        const NodalVectors         &X);
 
     /** d(mu . r^e)/dX for condensed_residual(). */
     NodalVectors
     condensed_residual_shape_derivative(const ReferenceTetrahedron &reference,
-                                        const NeoHookeanMixed      &material,
+                                        const Material      &material,
                                         const NodalVectors         &u,
                                         const NodalVectors         &X,
                                         const NodalVectors         &mu);

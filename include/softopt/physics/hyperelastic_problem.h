@@ -14,7 +14,7 @@
 
 #include <softopt/geometry/geometry.h>
 #include <softopt/path/equilibrium_problem.h>
-#include <softopt/physics/neo_hookean_mixed.h>
+#include <softopt/physics/material.h>
 #include <softopt/solvers/direct_solver.h>
 
 #include <memory>
@@ -51,7 +51,7 @@ namespace softopt
     HyperelasticProblem(const Triangulation<3> &triangulation,
                         const Mapping<3>       &mapping,
                         const Geometry         &geometry,
-                        const NeoHookeanMixed  &material,
+                        const Material  &material,
                         const double            pressure);
 
     /** Distributes DoFs, builds the constraints and the matrix. */
@@ -127,7 +127,7 @@ namespace softopt
     const FESystem<3> &
     get_fe() const;
 
-    const NeoHookeanMixed &
+    const Material &
     get_material() const;
 
     const Geometry &
@@ -183,7 +183,7 @@ namespace softopt
     const Triangulation<3> &triangulation;
     const Mapping<3>       &mapping;
     const Geometry         &geometry;
-    const NeoHookeanMixed  &material;
+    const Material  &material;
     const double            pressure;
 
     FESystem<3>           fe;
