@@ -122,16 +122,23 @@ namespace softopt
   {
     std::vector<Vector> result(functionals_.size());
     Vector              r, P, dg_da, dg_dX, mu_a, mu_psi;
-    // The last target first: after a warm start its tangent is assembled.
+    // The last target first: after a warm start a factorization of a
+    // nearby tangent is kept for it.
     for (auto target = states.rbegin(); target != states.rend(); ++target)
       {
         const double  load_factor = target->first;
         const Vector &a           = target->second;
         // The adjoint of the condensed system shares the tangent at the
         // target state (symmetric, Eq. adj2). After a warm start the last
-        // target's tangent is assembled and a nearby one factorized.
+        // target's tangent is assembled here and refined on the kept
+        // factorization of a nearby one; other targets factorize.
         const bool refine     = load_factor == tangent_at;
         bool       factorized = refine;
+        if (refine)
+          {
+            TimerOutput::Scope scope(timer_output, "adjoint: tangent");
+            problem->assemble(a, load_factor, r, P, true);
+          }
         for (unsigned int i = 0; i < functionals_.size(); ++i)
           {
             if (functionals_[i]->load_factor() != load_factor)

@@ -79,17 +79,22 @@ namespace softopt
   {
     EquilibriumProblem::Vector residual, load, increment;
     Monitor                    monitor(*this);
-    RefactorizationRule rule(reuse_factorization, problem.has_factorization());
+    RefactorizationRule rule(reuse_factorization, false);
     for (unsigned int iteration = 0;; ++iteration)
       {
-        problem.assemble(a, load_factor, residual, load, true);
+        const bool with_tangent = rule.certain();
+        problem.assemble(a, load_factor, residual, load, with_tangent);
         const double norm = residual.l2_norm();
         if (monitor.converged(iteration,
                               norm,
                               std::abs(load_factor) * load.l2_norm()))
           return {iteration, norm};
         if (rule.refactorize(norm))
-          problem.factorize();
+          {
+            if (!with_tangent)
+              problem.assemble(a, load_factor, residual, load, true);
+            problem.factorize();
+          }
         residual *= -1.;
         problem.solve(residual, increment);
         problem.update(a, increment);

@@ -74,6 +74,7 @@ namespace softopt
                      const Geometry            &geometry)
   {
     design                         = &design_configuration;
+    solution.reset();
     const DoFHandler<3> &dofs      = design->get_dof_handler();
     const MPI_Comm       comm      = dofs.get_communicator();
     const IndexSet       owned     = dofs.locally_owned_dofs();
@@ -169,6 +170,10 @@ namespace softopt
     std::vector<Tensor<2, 3>>         grad_psi(quadrature.size());
     std::vector<Tensor<1, 3>>         psi_values(quadrature.size()),
       d_values(quadrature.size());
+    std::vector<Tensor<2, 3>>         T(n);
+    std::vector<unsigned int>         component(n);
+    for (unsigned int i = 0; i < n; ++i)
+      component[i] = fe.system_to_component_index(i).first;
 
     Vector r(dofs.locally_owned_dofs(), dofs.get_communicator());
     if (with_tangent)
@@ -196,33 +201,33 @@ namespace softopt
               const Tensor<1, 3> gap = (psi_values[q] - d_values[q]) / volume;
               const double       JxW = fe_values.JxW(q);
               for (unsigned int i = 0; i < n; ++i)
-                {
-                  const unsigned int c_i = fe.system_to_component_index(i).first;
-                  cell_residual(i) +=
-                    (P[c_i] * fe_values.shape_grad(i, q) +
-                     gap[c_i] * fe_values.shape_value(i, q)) *
-                    JxW;
-                }
+                cell_residual(i) +=
+                  (P[component[i]] * fe_values.shape_grad(i, q) +
+                   gap[component[i]] * fe_values.shape_value(i, q)) *
+                  JxW;
               if (!with_tangent)
                 continue;
+              // grad N_i : A : grad N_j through T_j = A : (e_{c_j} (x) g_j),
+              // and the mass term N_i N_j / |Omega_o| on the diagonal blocks.
               const Tensor<4, 3> A = 0.5 * material.tangent(F);
+              for (unsigned int j = 0; j < n; ++j)
+                {
+                  const Tensor<1, 3> &g_j = fe_values.shape_grad(j, q);
+                  for (unsigned int k = 0; k < 3; ++k)
+                    for (unsigned int l = 0; l < 3; ++l)
+                      T[j][k][l] = A[k][l][component[j]] * g_j;
+                }
               for (unsigned int i = 0; i < n; ++i)
                 {
-                  const unsigned int  c_i = fe.system_to_component_index(i).first;
                   const Tensor<1, 3> &g_i = fe_values.shape_grad(i, q);
+                  const double N_i = fe_values.shape_value(i, q) / volume;
                   for (unsigned int j = 0; j < n; ++j)
-                    {
-                      const unsigned int  c_j = fe.system_to_component_index(j).first;
-                      const Tensor<1, 3> &g_j = fe_values.shape_grad(j, q);
-                      double              a   = 0;
-                      for (unsigned int k = 0; k < 3; ++k)
-                        for (unsigned int l = 0; l < 3; ++l)
-                          a += A[c_i][k][c_j][l] * g_i[k] * g_j[l];
-                      if (c_i == c_j)
-                        a += fe_values.shape_value(i, q) *
-                             fe_values.shape_value(j, q) / volume;
-                      cell_matrix(i, j) += a * JxW;
-                    }
+                    cell_matrix(i, j) +=
+                      (T[j][component[i]] * g_i +
+                       (component[i] == component[j] ?
+                          N_i * fe_values.shape_value(j, q) :
+                          0.)) *
+                      JxW;
                 }
             }
           cell->get_dof_indices(dof_indices);
@@ -263,12 +268,15 @@ namespace softopt
     const double round_off = 1e-14 * design->initial_coordinates().linfty_norm();
     bool         small_update = false;
     // Modified Newton on the factorization kept from the last solve (the
-    // previous design's tangent).
+    // previous design's tangent); steps that keep it assemble only the
+    // residual.
     RefactorizationRule rule(true, solver->has_factorization());
+    bool tangent_at_solution = false;
     for (unsigned int it = 0;; ++it)
       {
-        Vector       r    = residual(d, psi, true);
-        const double norm = r.l2_norm();
+        tangent_at_solution = rule.certain();
+        Vector       r      = residual(d, psi, tangent_at_solution);
+        const double norm   = r.l2_norm();
         if (norm <= tolerance * scale || norm < 1e-300 || small_update)
           {
             result.iterations = it;
@@ -281,7 +289,11 @@ namespace softopt
                                "): the design is too far from the mesh. Reduce "
                                "the design bound or the move limit."));
         if (rule.refactorize(norm))
-          solver->factorize(matrix);
+          {
+            if (!tangent_at_solution)
+              residual(d, psi, true);
+            solver->factorize(matrix);
+          }
         r *= -1.;
         increment.reinit(r);
         solver->solve(r, increment);
@@ -289,6 +301,11 @@ namespace softopt
         psi += increment;
         small_update = increment.linfty_norm() <= round_off;
       }
+    // The adjoint needs the tangent at the solution: assembled lazily.
+    if (tangent_at_solution)
+      solution.reset();
+    else
+      solution = std::make_unique<std::pair<Vector, Vector>>(d, psi);
     const Result health  = mesh_health(psi);
     result.min_J_psi     = health.min_J_psi;
     result.worst_quality = health.worst_quality;
@@ -308,10 +325,15 @@ namespace softopt
   void
   ShapeFilter::solve_adjoint(const Vector &rhs, Vector &mu)
   {
+    if (solution)
+      {
+        residual(solution->first, solution->second, true);
+        solution.reset();
+      }
     Vector b = rhs;
     constraints.set_zero(b);
-    // The tangent of the last residual() is at the solution; the kept
-    // factorization is of a nearby one.
+    // The tangent is at the solution; the kept factorization is of a
+    // nearby one.
     solver->solve_refined(matrix, b, mu);
     constraints.set_zero(mu);
   }

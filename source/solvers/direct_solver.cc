@@ -99,7 +99,12 @@ namespace softopt
     else
       check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
 
+    // KSPSolve would factorize again whenever the matrix changed since
+    // (a new tangent assembled for a residual or an adjoint): only
+    // factorize() does, so that a kept factorization is really kept.
+    check(KSPSetReusePreconditioner(ksp, PETSC_FALSE), "KSPSetReusePreconditioner");
     check(KSPSetUp(ksp), "KSPSetUp");
+    check(KSPSetReusePreconditioner(ksp, PETSC_TRUE), "KSPSetReusePreconditioner");
     ++factorizations;
 
     PC  pc;

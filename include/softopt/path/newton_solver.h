@@ -55,12 +55,16 @@ namespace softopt
     };
 
     /**
-     * Solves r_a(a, lambda) = 0 starting from @p a. On return the tangent at
-     * the converged state is assembled (not yet factorized). Throws
-     * StepFailure when the iteration does not converge. With
-     * @p reuse_factorization (a warm start from a nearby state), modified
-     * Newton: the factorization the problem holds serves while it
-     * contracts the residual by at least 4 per step.
+     * Solves r_a(a, lambda) = 0 starting from @p a. Throws StepFailure when
+     * the iteration does not converge. Plain Newton (the default) leaves
+     * the tangent at the converged state assembled, not yet factorized.
+     * With @p reuse_factorization (a warm start from a nearby state),
+     * modified Newton: the first step factorizes the tangent at @p a (the
+     * previous design's factorization does not serve: its step contracts
+     * the residual by less than 3 and leaves a state from which Newton
+     * diverges), later steps keep that factorization while it contracts the
+     * residual by at least 4 per step and assemble only the residual, and
+     * the tangent the problem holds on return is of an earlier state.
      */
     Result
     solve(EquilibriumProblem         &problem,

@@ -102,6 +102,8 @@ namespace softopt
     PETScWrappers::MPI::SparseMatrix matrix;
     PETScWrappers::MPI::SparseMatrix mass_matrix;
     std::unique_ptr<DirectSolver>    solver;
+    /** (d, psi) of the last solve() while its tangent is not assembled. */
+    std::unique_ptr<std::pair<Vector, Vector>> solution;
     double                           volume                 = 0;
   };
 } // namespace softopt

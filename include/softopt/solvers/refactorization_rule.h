@@ -20,6 +20,15 @@ namespace softopt
       , have_factorization(have_factorization)
     {}
 
+    /** Whether the next step factorizes whatever its residual: then its
+     * tangent is needed, otherwise only its residual (modified Newton
+     * assembles the tangent only for the steps that factorize). */
+    bool
+    certain() const
+    {
+      return !reuse || !have_factorization;
+    }
+
     /** Call once per step with its residual norm, before the solve. */
     bool
     refactorize(const double residual_norm)
