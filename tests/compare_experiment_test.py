@@ -8,6 +8,13 @@ the script's correction must recover Delta V^p to round-off, both through its
 functions and end to end through its command line.  Bad inputs must fail with
 a message naming the file.
 
+Markers (--markers): marker displacements sampled from the simulated curves
+of tracked_points.csv, in other units and with a subset of the components,
+must give differences of zero (to round-off through the
+functions, to the printed digits in comparison.md); bad marker files and
+markers the simulation does not track must fail with a message naming the
+file.
+
 Run: python3 tests/compare_experiment_test.py  (from any directory).
 """
 
@@ -242,6 +249,190 @@ class CommandLine(unittest.TestCase):
         self.assert_fails("empty.csv", None, None, "empty", lines="# x\n")
         self.assert_fails("header_only.csv", None, None, "no data",
                           lines="pressure_kPa,syringe_volume_ml\n")
+
+
+# Known displacement curves u(p) [mm] of two tracked points, and their nodes.
+TRACKED = {"tip": (60.0, 0.0, 11.5), "side": (30.0, 0.0, 11.5)}
+
+
+def marker_curve(name, p):
+    """Known, smooth, nonlinear displacement (n, 3) [mm] at pressures p."""
+    p = np.asarray(p, dtype=float)
+    if name == "tip":
+        return np.column_stack([0.05 * p + 0.002 * p**2, -0.004 * p,
+                                0.04 * p + 0.1 * np.sin(p / 5.0)])
+    return np.column_stack([0.01 * p, 0.003 * p**2,
+                            0.12 * p - 0.002 * p**2])
+
+
+def simulated_curve(name, p):
+    """The simulation's view of marker_curve: tabulated at P_SIM, linear in
+    between (what the script interpolates).  The measured pressures P hold
+    every P_SIM, so markers sampled from this at P carry the same curve."""
+    table = marker_curve(name, P_SIM)
+    return np.column_stack([np.interp(p, P_SIM, table[:, c])
+                            for c in range(3)])
+
+
+class Markers(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.TemporaryDirectory()
+        self.dir = self.tmp.name
+        self.sim = os.path.join(self.dir, "load_path.csv")
+        n = P_SIM.size
+        dv = cavity_curve(P_SIM)
+        write_csv(self.sim, ["step", "load_factor", "pressure_kPa",
+                             "cavity_volume_mm3", "delta_volume_mm3"],
+                  [np.arange(n), P_SIM / 15, P_SIM, CAVITY + dv, dv])
+        # tracked_points.csv in softopt's layout
+        header, columns = ["step", "load_factor", "pressure_kPa"], \
+            [np.arange(n), P_SIM / 15, P_SIM]
+        for name, X in TRACKED.items():
+            u = marker_curve(name, P_SIM)
+            for q, x in zip("XYZ", X):
+                header.append(f"{name}_{q}_mm")
+                columns.append(np.full(n, x))
+            for c in range(3):
+                header.append(f"{name}_u{'xyz'[c]}_mm")
+                columns.append(u[:, c])
+        write_csv(os.path.join(self.dir, "tracked_points.csv"), header,
+                  columns)
+        self.run1 = os.path.join(self.dir, "run1.csv")
+        write_csv(self.run1, ["pressure_kPa", "syringe_volume_mm3"],
+                  [P, cavity_curve(P) + P / (P + P0) * CAVITY])
+        # The "video": pressure in Pa, tip in mm (all components), side in
+        # micrometres (u_x, u_z only, bracket style), and a frame column.
+        self.markers = os.path.join(self.dir, "markers.csv")
+        tip, side = simulated_curve("tip", P), simulated_curve("side", P)
+        write_csv(self.markers,
+                  ["frame", "pressure_Pa", "tip_ux_mm", "tip_uy_mm",
+                   "tip_uz_mm", "side_ux [um]", "side_uz [um]"],
+                  [np.arange(P.size), 1000 * P, tip[:, 0], tip[:, 1],
+                   tip[:, 2], 1000 * side[:, 0], 1000 * side[:, 2]])
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def run_cli(self, *args):
+        return subprocess.run([sys.executable, SCRIPT, *args],
+                              capture_output=True, text=True, cwd=self.dir)
+
+    def test_column_names(self):
+        self.assertEqual(ce.split_marker_column("tip_ux_mm"), ("tip", 0, "mm"))
+        self.assertEqual(ce.split_marker_column("left_2_uZ [µm]"),
+                         ("left_2", 2, "um"))
+        self.assertEqual(ce.split_marker_column("tip_uy"), ("tip", 1, None))
+        self.assertIsNone(ce.split_marker_column("frame"))
+
+    def test_differences_vanish(self):
+        p_sim, points = ce.read_tracked(
+            os.path.join(self.dir, "tracked_points.csv"))
+        p, markers = ce.read_markers(self.markers)
+        np.testing.assert_allclose(p, P, rtol=1e-14, atol=1e-14)
+        self.assertEqual(sorted(markers["side"]), [0, 2])
+        np.testing.assert_allclose(markers["side"][2],
+                                   simulated_curve("side", P)[:, 2],
+                                   rtol=1e-13, atol=1e-15)
+        rows = ce.marker_rows(p_sim, points, p, markers)
+        self.assertEqual(len(rows), 6)
+        for marker, pressure, sim, meas, diff, norm in rows:
+            exact = simulated_curve(marker, [pressure])[0]
+            np.testing.assert_allclose(sim, exact, rtol=0, atol=1e-12)
+            self.assertLess(norm, 1e-12, (marker, pressure))
+        self.assertTrue(np.isnan(rows[-1][4][1]))  # side u_y: not measured
+
+    def marker_table_rows(self, path):
+        with open(path) as f:
+            return [[c.strip() for c in line.strip().strip("|").split("|")]
+                    for line in f
+                    if line.startswith("| tip ") or line.startswith("| side ")]
+
+    def test_end_to_end(self):
+        out = os.path.join(self.dir, "out")
+        result = self.run_cli("--simulation", self.sim, "--run", self.run1,
+                              "--markers", self.markers, "--output-dir", out)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertRegex(result.stderr, "warning: .*markers.csv.*ignored "
+                         "columns frame")
+        for png in ("pressure_volume.png", "markers.png"):
+            with open(os.path.join(out, png), "rb") as f:
+                self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
+        md = os.path.join(out, "comparison.md")
+        with open(md) as f:
+            text = f.read()
+        self.assertIn("# Simulated vs measured cavity volume change", text)
+        self.assertIn("## Marker displacements", text)
+        self.assertIn("tip: simulated at the surface node (60.00, 0.00, "
+                      "11.50) mm; measured u_x, u_y, u_z", text)
+        rows = self.marker_table_rows(md)
+        self.assertEqual(len(rows), 6)
+        for row in rows:
+            p = float(row[1])
+            sim = [float(x) for x in row[2].split(",")]
+            np.testing.assert_allclose(sim, simulated_curve(row[0], [p])[0],
+                                       rtol=0, atol=6e-4)
+            for x in row[4].split(","):
+                if x.strip() != "–":
+                    self.assertLessEqual(abs(float(x)), 5e-4, row)
+            self.assertLessEqual(float(row[5]), 5e-4, row)
+        self.assertEqual([r[4].split(",")[1].strip() for r in rows
+                          if r[0] == "side"], ["–"] * 3)
+
+    def test_markers_without_runs(self):
+        result = self.run_cli("--simulation", self.sim, "--markers",
+                              self.markers)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(self.dir, "comparison.md")) as f:
+            self.assertTrue(f.read().startswith(
+                "# Simulated vs measured marker displacements"))
+        self.assertFalse(os.path.exists(
+            os.path.join(self.dir, "pressure_volume.png")))
+        # neither --run nor --markers: a usage error
+        result = self.run_cli("--simulation", self.sim)
+        self.assertEqual(result.returncode, 2)
+        self.assertIn("--run", result.stderr)
+
+    def assert_fails(self, name, header, columns, message, lines=None,
+                     tracked=None):
+        path = os.path.join(self.dir, name)
+        if lines is None:
+            write_csv(path, header, columns)
+        else:
+            with open(path, "w") as f:
+                f.write(lines)
+        args = ["--simulation", self.sim, "--markers", path]
+        if tracked:
+            args += ["--tracked", tracked]
+        result = self.run_cli(*args, "--output-dir", "bad")
+        self.assertNotEqual(result.returncode, 0)
+        self.assertIn(tracked or name, result.stderr)
+        self.assertRegex(result.stderr, message)
+        self.assertNotIn("Traceback", result.stderr)
+        self.assertFalse(os.path.exists(os.path.join(self.dir, "bad")))
+
+    def test_bad_marker_data(self):
+        u = marker_curve("tip", P)[:, 0]
+        self.assert_fails("unknown.csv", ["pressure_kPa", "tip_ux_mm",
+                                          "nose_uz_mm"], [P, u, u],
+                          "marker\\(s\\) nose not tracked .* tracks tip, side")
+        self.assert_fails("unitless.csv", ["pressure_kPa", "tip_ux"], [P, u],
+                          "'tip_ux' does not state its unit")
+        self.assert_fails("inches.csv", ["pressure_kPa", "tip_ux_in"],
+                          [P, u], "unknown unit 'in'")
+        self.assert_fails("twice.csv", ["pressure_kPa", "tip_ux_mm",
+                                        "tip_ux_um"], [P, u, 1000 * u],
+                          "two columns for u_x of marker 'tip'")
+        self.assert_fails("nopressure.csv", ["time_s", "tip_ux_mm"], [P, u],
+                          "no pressure column")
+        self.assert_fails("nomarker.csv", ["pressure_kPa", "frame"], [P, u],
+                          "no marker displacement column")
+        self.assert_fails("text.csv", None, None, "line 3.*not a number",
+                          lines="pressure_kPa,tip_ux_mm\n0,0\n1,lost\n")
+        self.assert_fails("norange.csv", ["pressure_kPa", "tip_ux_mm"],
+                          [P + 20, u], "share no pressure range")
+        self.assert_fails("ok.csv", ["pressure_kPa", "tip_ux_mm"], [P, u],
+                          "no such file", tracked=os.path.join(
+                              self.dir, "missing", "tracked_points.csv"))
 
 
 if __name__ == "__main__":

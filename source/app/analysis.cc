@@ -7,6 +7,7 @@
 #include <softopt/functionals/design_surface.h>
 #include <softopt/io/csv_writer.h>
 #include <softopt/io/pvd_series.h>
+#include <softopt/io/tracked_points.h>
 #include <softopt/physics/hyperelastic_problem.h>
 #include <softopt/shape/design_configuration.h>
 
@@ -71,6 +72,27 @@ namespace softopt
     CsvWriter load_path(directory + "/load_path.csv", columns, comm);
     PvdSeries pvd(directory + "/solution.pvd", comm);
 
+    // The displacement history of named surface points, for markers
+    // tracked on video (only if any are named).
+    std::unique_ptr<TrackedPoints> tracked;
+    std::unique_ptr<CsvWriter>     tracked_csv;
+    if (!settings.tracked_points.empty())
+      {
+        tracked = std::make_unique<TrackedPoints>(problem,
+                                                  design,
+                                                  settings.tracked_points);
+        tracked->print(pcout);
+        std::vector<std::string> tracked_columns{"step",
+                                                 "load_factor",
+                                                 "pressure_kPa"};
+        for (const auto &c : tracked->csv_columns())
+          tracked_columns.push_back(c);
+        tracked_csv = std::make_unique<CsvWriter>(directory +
+                                                    "/tracked_points.csv",
+                                                  tracked_columns,
+                                                  comm);
+      }
+
     unsigned int vtu_counter = 0;
     const auto   record      = [&](const PathFollowing::PathPoint  &point,
                             const HyperelasticProblem::Vector &state) {
@@ -91,6 +113,13 @@ namespace softopt
       row.push_back(CsvWriter::format(point.residual_norm));
       row.push_back(point.at_target ? "1" : "0");
       load_path.add_row(row);
+      if (tracked)
+        {
+          std::vector<std::string> tracked_row(row.begin(), row.begin() + 3);
+          for (const auto &entry : tracked->csv_entries(state))
+            tracked_row.push_back(entry);
+          tracked_csv->add_row(tracked_row);
+        }
       if (settings.vtu_output == Settings::VtuOutput::every_step ||
           (settings.vtu_output == Settings::VtuOutput::targets &&
            point.at_target))

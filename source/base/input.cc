@@ -177,4 +177,40 @@ namespace softopt
   {
     return Patterns::List(Patterns::Double(), 3, 3, ",");
   }
+
+
+
+  std::vector<NamedPoint>
+  parse_named_points(const std::string &text, const std::string &where)
+  {
+    const std::regex        valid_name("[A-Za-z0-9_-]+");
+    std::vector<NamedPoint> points;
+    for (const auto &item : Utilities::split_string_list(text, ';'))
+      {
+        const auto colon = item.find(':');
+        AssertThrow(colon != std::string::npos,
+                    ExcMessage(where + ": \"" + item +
+                               "\" is not of the form \"name: x, y, z\", "
+                               "for example \"tip: 60, 0, 11.5\"."));
+        const std::string name = Utilities::trim(item.substr(0, colon));
+        AssertThrow(!name.empty(),
+                    ExcMessage(where + ": \"" + item +
+                               "\" has no name before the colon; write "
+                               "\"name: x, y, z\", for example \"tip: 60, "
+                               "0, 11.5\"."));
+        AssertThrow(std::regex_match(name, valid_name),
+                    ExcMessage(where + ": the name \"" + name +
+                               "\" may only contain letters, digits, '_' "
+                               "and '-' (it becomes a CSV column name)."));
+        for (const auto &p : points)
+          AssertThrow(p.name != name,
+                      ExcMessage(where + ": the name \"" + name +
+                                 "\" appears twice."));
+        const Tensor<1, 3> x =
+          parse_vector(Utilities::trim(item.substr(colon + 1)),
+                       where + ", point \"" + name + "\"");
+        points.push_back({name, Point<3>(x)});
+      }
+    return points;
+  }
 } // namespace softopt

@@ -13,9 +13,9 @@ namespace softopt
   /**
    * "softopt analyze CASE.prm": inflates the body along its load path and
    * writes, in the output directory, load_path.csv (one row per converged
-   * step), solution.pvd with its VTU files, the expanded parameter file and
-   * stop_reason.txt. Returns the exit code: non-zero if a load step could
-   * not be solved.
+   * step), solution.pvd with its VTU files, the expanded parameter file,
+   * stop_reason.txt and, with "Tracked points", tracked_points.csv.
+   * Returns the exit code: non-zero if a load step could not be solved.
    */
   int
   run_analysis(Settings &settings);
@@ -25,8 +25,9 @@ namespace softopt
    * load factor of @p targets, and writes into
    * @p directory load_path.csv (cavity volume, design-surface means and
    * every functional of @p functionals per converged step), solution.pvd
-   * with its VTU files, and stop_reason.txt. Shared by "analyze" and the
-   * final analysis of "optimize".
+   * with its VTU files, stop_reason.txt and, if the settings name tracked
+   * points, tracked_points.csv (their displacements per converged step).
+   * Shared by "analyze" and the final analysis of "optimize".
    */
   PathFollowing::Result
   follow_load_path(HyperelasticProblem                   &problem,

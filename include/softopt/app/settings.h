@@ -49,6 +49,10 @@ namespace softopt
       none
     } vtu_output = VtuOutput::every_step;
 
+    /** subsection Output: the surface points whose displacement history
+     * goes to tracked_points.csv (none: no file). */
+    std::vector<NamedPoint> tracked_points;
+
     Geometry           geometry;
     /** subsection Material: the registered model it names. */
     std::shared_ptr<const Material> material;

@@ -2,6 +2,7 @@
 #define softopt_base_input_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/base/types.h>
 
@@ -79,6 +80,22 @@ namespace softopt
   /** The pattern of an entry holding three comma-separated numbers. */
   Patterns::List
   vector_pattern();
+
+  /** A point with a name, in mm ("tip: 60, 0, 11.5"). */
+  struct NamedPoint
+  {
+    std::string name;
+    Point<3>    position;
+  };
+
+  /**
+   * Named points from the syntax "name: x, y, z; name: x, y, z" (mm), for
+   * example "tip: 60, 0, 11.5; side: 30, 0, 11.5". Names are letters, digits,
+   * '_' and '-' (they become CSV column names) and must be distinct. An
+   * empty text gives no points. Throws naming @p where.
+   */
+  std::vector<NamedPoint>
+  parse_named_points(const std::string &text, const std::string &where);
 } // namespace softopt
 
 #endif

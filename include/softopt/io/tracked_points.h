@@ -1,0 +1,93 @@
+#ifndef softopt_io_tracked_points_h
+#define softopt_io_tracked_points_h
+
+#include <deal.II/base/conditional_ostream.h>
+#include <deal.II/base/point.h>
+
+#include <softopt/base/input.h>
+#include <softopt/physics/hyperelastic_problem.h>
+#include <softopt/shape/cell_nodes.h>
+#include <softopt/shape/design_configuration.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace softopt
+{
+  /**
+   * Named points of the body's surface whose displacement is recorded along
+   * the load path ("Tracked points" of subsection Output), for comparison
+   * with markers tracked on video at the bench.
+   *
+   * Each requested point is replaced by the nearest node of the quadratic
+   * mesh (vertex or midside node) on a boundary face, in the design
+   * configuration X = X_o + psi at construction. Symmetry planes (Dirichlet
+   * boundaries that fix only some components) cut through the body and are
+   * not searched; their edges belong to surface faces as well. At a node the
+   * P2 displacement is its nodal value, so nothing is interpolated. Under
+   * MPI each rank searches its locally owned cells and the nearest node
+   * wins (the lowest rank on a tie); that rank provides the values.
+   */
+  class TrackedPoints
+  {
+  public:
+    /** Finds the surface node of each point of @p requested (mm).
+     * Collective. */
+    TrackedPoints(const HyperelasticProblem     &problem,
+                  const DesignConfiguration     &design,
+                  const std::vector<NamedPoint> &requested);
+
+    /** A requested point and the surface node chosen for it (mm). */
+    struct SurfaceNode
+    {
+      std::string name;
+      Point<3>    requested;
+      Point<3>    position;
+      double      distance;
+      /** The longest edge of the boundary face the node was found on. */
+      double face_size;
+
+      /** Whether the node is so far from the requested point that the point
+       * is probably not on the surface: farther than half the longest edge
+       * of its face (a point on a face is never farther than about 0.3 of
+       * that from the face's nearest node) or 1 mm, whichever is larger. */
+      bool
+      far() const;
+    };
+
+    /** The chosen nodes, in the order of the request, on every rank. */
+    const std::vector<SurfaceNode> &
+    surface_nodes() const;
+
+    /** One line per point: the node chosen and its distance, with a warning
+     * for a far() one. */
+    void
+    print(const ConditionalOStream &out) const;
+
+    /** The displacement u in mm at each node for the state @p a (locally
+     * owned entries), on every rank. Collective. */
+    std::vector<Tensor<1, 3>>
+    displacements(const HyperelasticProblem::Vector &a) const;
+
+    /** The columns of tracked_points.csv after step, load_factor and
+     * pressure_kPa: per name <name>_X_mm, _Y_mm, _Z_mm (the node) and
+     * <name>_ux_mm, _uy_mm, _uz_mm (its displacement). */
+    std::vector<std::string>
+    csv_columns() const;
+
+    /** The entries of those columns for the state @p a. Collective. */
+    std::vector<std::string>
+    csv_entries(const HyperelasticProblem::Vector &a) const;
+
+  private:
+    const HyperelasticProblem &problem;
+    std::vector<SurfaceNode>   nodes;
+
+    /** Per point, on the rank that provides its values: the cell holding
+     * the node and the node's index in the cell; empty elsewhere. */
+    std::vector<std::optional<std::pair<CellNodes, unsigned int>>> owned;
+  };
+} // namespace softopt
+
+#endif
