@@ -206,11 +206,7 @@ namespace softopt
         const auto &stats = problem.get_statistics();
         pcout << "Wall time: mesh and setup " << setup_time
               << " s, path following with output " << path_timer.wall_time()
-              << " s\n  " << stats.n_assemblies << " assemblies "
-              << stats.assembly_time << " s, " << stats.n_factorizations
-              << " factorizations " << stats.factorization_time << " s, "
-              << stats.n_solves << " solves " << stats.solve_time << " s"
-              << std::endl;
+              << " s\n  " << stats.summary() << std::endl;
       }
     return result.failed ? 1 : 0;
   }

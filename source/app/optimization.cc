@@ -95,11 +95,7 @@ namespace softopt
         // The unit of scripts/bench_iteration: one assembly plus one
         // numerical factorization of the physics on this mesh.
         const auto &stats = problem.hyperelastic_problem().get_statistics();
-        pcout << "Physics over the run: " << stats.n_assemblies
-              << " assemblies " << stats.assembly_time << " s, "
-              << stats.n_factorizations << " factorizations "
-              << stats.factorization_time << " s, " << stats.n_solves
-              << " solves " << stats.solve_time << " s" << std::endl;
+        pcout << "Physics over the run: " << stats.summary() << std::endl;
         problem.timer().print_summary();
         pcout << "Wall time: " << timer.wall_time() << " s" << std::endl;
       }

@@ -151,14 +151,20 @@ namespace softopt
                 factorized = true;
                 tangent_at = -1;
               }
-            TimerOutput::Scope scope(timer_output, "adjoint: solves, shape derivatives");
-            functionals_[i]->evaluate(*problem, *design, a, &dg_da, &dg_dX);
-            if (refine)
-              problem->solve_refined(dg_da, mu_a);
-            else
-              problem->solve(dg_da, mu_a);
+            {
+              TimerOutput::Scope scope(timer_output, "adjoint: solve");
+              functionals_[i]->evaluate(*problem, *design, a, &dg_da, &dg_dX);
+              if (refine)
+                problem->solve_refined(dg_da, mu_a);
+              else
+                problem->solve(dg_da, mu_a);
+            }
             // Eq. adj3: (dr_psi/dpsi)^T mu_psi = dg/dpsi - (dr_a/dpsi)^T mu_a
-            dg_dX -= residual_shape_derivative(*problem, *design, a, load_factor, mu_a);
+            {
+              TimerOutput::Scope scope(timer_output, "adjoint: shape derivatives");
+              dg_dX -= residual_shape_derivative(*problem, *design, a, load_factor, mu_a);
+            }
+            TimerOutput::Scope scope(timer_output, "adjoint: filter");
             settings.shape_filter.solve_adjoint(dg_dX, mu_psi);
             // Eq. sens06: dg/dd = -mu_psi^T dr_psi/dd
             result[i] = settings.shape_filter.design_gradient(mu_psi);

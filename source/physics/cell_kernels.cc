@@ -122,47 +122,6 @@ namespace softopt
         return cross_product_3d(xs, xt);
       }
 
-      /** P(F, p~) for plain numbers. */
-      Tensor<2, 3>
-      first_piola(const Material &material, const Tensor<2, 3> &F, const double p)
-      {
-        return material.first_piola(F, p);
-      }
-
-      /** P(F, p~) with derivatives dP = A : dF + dP/dp~ dp~ from the
-       * material's tangent, so that a material model needs no AD code. */
-      Tensor<2, 3, AD>
-      first_piola(const Material &material, const Tensor<2, 3, AD> &F, const AD &p)
-      {
-        Tensor<2, 3> F_value;
-        int          n = p.size();
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = 0; j < 3; ++j)
-            {
-              F_value[i][j] = F[i][j].val();
-              n             = std::max(n, F[i][j].size());
-            }
-        const Tensor<2, 3> P        = material.first_piola(F_value, p.val());
-        const Tensor<4, 3> A        = material.tangent(F_value, p.val());
-        const Tensor<2, 3> coupling = material.pressure_coupling(F_value);
-        Tensor<2, 3, AD>   result;
-        for (unsigned int i = 0; i < 3; ++i)
-          for (unsigned int j = 0; j < 3; ++j)
-            result[i][j] = AD(n, P[i][j]);
-        for (int d = 0; d < n; ++d)
-          {
-            Tensor<2, 3> dF;
-            for (unsigned int k = 0; k < 3; ++k)
-              for (unsigned int l = 0; l < 3; ++l)
-                dF[k][l] = F[k][l].dx(d);
-            for (unsigned int i = 0; i < 3; ++i)
-              for (unsigned int j = 0; j < 3; ++j)
-                result[i][j].fastAccessDx(d) =
-                  scalar_product(A[i][j], dF) + coupling[i][j] * p.dx(d);
-          }
-        return result;
-      }
-
       template <typename Number>
       Nodes<Number>
       residual(const ReferenceTetrahedron &reference,
@@ -200,7 +159,7 @@ namespace softopt
             Tensor<2, 3, Number> F = H[q];
             for (unsigned int i = 0; i < 3; ++i)
               F[i][i] += 1.;
-            const Tensor<2, 3, Number> P = first_piola(material, F, p);
+            const Tensor<2, 3, Number> P = material.first_piola(F, p);
             for (unsigned int a = 0; a < 10; ++a)
               {
                 const Tensor<1, 3, Number> force = P * grad_N[q][a];
@@ -335,13 +294,74 @@ namespace softopt
 
     NodalVectors
     condensed_residual_shape_derivative(const ReferenceTetrahedron &reference,
-                                        const Material      &material,
+                                        const Material             &material,
                                         const NodalVectors         &u,
                                         const NodalVectors         &X,
                                         const NodalVectors         &mu)
     {
-      return derivatives(
-        contract(mu, residual(reference, material, u, independent(X))));
+      // mu . r^e = int P(F, p~) : G dV with G = grad mu. A perturbation V of
+      // the nodes (grad V = sum_c V_c (x) grad N_c) changes grad N by
+      // -grad N grad V, dV by tr(grad V) dV, so H = grad u by -H grad V and
+      // G by -G grad V; each quadrature point contributes Sigma : grad V dV,
+      //   Sigma = -H^T (G : A) - G^T P + (P : G) I,
+      // and the element pressure p~ = -K D / |Omega^e|, D = int (J - 1) dV,
+      // adds (int dP/dp~ : G dV) dp~ with
+      //   dp~ = -K / |Omega^e| int (H^T dP/dp~ + (J - 1 - D/|Omega^e|) I) : grad V dV
+      // (dP/dp~ = -J F^{-T}). d/dV_c of Sigma : grad V is Sigma grad N_c.
+      const unsigned int        n_q = reference.cell_points.size();
+      std::vector<NodalVectors> grad_N(n_q);
+      std::vector<Tensor<2, 3>> H(n_q), G(n_q);
+      std::vector<double>       dV(n_q), J_minus_1(n_q);
+      double                    volume = 0, dilatation = 0;
+      for (unsigned int q = 0; q < n_q; ++q)
+        {
+          const auto        &point   = reference.cell_points[q];
+          const Tensor<2, 3> J       = jacobian(point, as_nodes(X));
+          const Tensor<2, 3> J_inv_T = transpose(invert(J));
+          for (unsigned int a = 0; a < 10; ++a)
+            {
+              grad_N[q][a] = J_inv_T * point.gradients[a];
+              H[q] += outer_product(u[a], grad_N[q][a]);
+              G[q] += outer_product(mu[a], grad_N[q][a]);
+            }
+          dV[q]        = determinant(J) * point.weight;
+          J_minus_1[q] = jacobian_minus_one(H[q]);
+          volume += dV[q];
+          dilatation += J_minus_1[q] * dV[q];
+        }
+      const double p = -material.bulk_modulus * dilatation / volume;
+
+      NodalVectors              d{};
+      std::vector<Tensor<2, 3>> coupling(n_q);
+      double                    pressure_sensitivity = 0; // int dP/dp~ : G dV
+      for (unsigned int q = 0; q < n_q; ++q)
+        {
+          const Tensor<2, 3> F = unit_symmetric_tensor<3>() + H[q];
+          const Tensor<2, 3> P = material.first_piola(F, p);
+          const Tensor<4, 3> A = material.tangent(F, p);
+          coupling[q]          = material.pressure_coupling(F);
+          pressure_sensitivity += scalar_product(coupling[q], G[q]) * dV[q];
+          Tensor<2, 3> GA; // (G : A)_kl = G_ij A_ijkl
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              GA += G[q][i][j] * A[i][j];
+          const Tensor<2, 3> Sigma =
+            -transpose(H[q]) * GA - transpose(G[q]) * P +
+            scalar_product(P, G[q]) * unit_symmetric_tensor<3>();
+          for (unsigned int c = 0; c < 10; ++c)
+            d[c] += Sigma * grad_N[q][c] * dV[q];
+        }
+      const double factor =
+        -material.bulk_modulus / volume * pressure_sensitivity;
+      for (unsigned int q = 0; q < n_q; ++q)
+        {
+          const Tensor<2, 3> Pi =
+            transpose(H[q]) * coupling[q] +
+            (J_minus_1[q] - dilatation / volume) * unit_symmetric_tensor<3>();
+          for (unsigned int c = 0; c < 10; ++c)
+            d[c] += factor * (Pi * grad_N[q][c]) * dV[q];
+        }
+      return d;
     }
 
 

@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 
 namespace softopt
 {
@@ -347,8 +348,9 @@ namespace softopt
     if (with_tangent)
       system_matrix.compress(VectorOperation::add);
 
-    ++statistics.n_assemblies;
-    statistics.assembly_time += timer.wall_time();
+    ++(with_tangent ? statistics.n_assemblies : statistics.n_residuals);
+    (with_tangent ? statistics.assembly_time : statistics.residual_time) +=
+      timer.wall_time();
     if (Utilities::MPI::logical_or(inverted, triangulation_comm))
       throw StepFailure("an element is inverted (J <= 0 at a quadrature "
                         "point)");
@@ -687,6 +689,19 @@ namespace softopt
   {
     return constraints;
   }
+
+  std::string
+  HyperelasticProblem::Statistics::summary() const
+  {
+    std::ostringstream s;
+    s << n_assemblies << " assemblies " << assembly_time << " s, "
+      << n_factorizations << " factorizations " << factorization_time
+      << " s, " << n_solves << " solves " << solve_time << " s, "
+      << n_residuals << " residuals " << residual_time << " s";
+    return s.str();
+  }
+
+
 
   const HyperelasticProblem::Statistics &
   HyperelasticProblem::get_statistics() const

@@ -48,8 +48,10 @@ namespace softopt
   /**
    * Cell-level kernels in the design configuration X (mm) of one cell. The
    * functions ending in _shape_derivative differentiate with respect to the
-   * nodal positions by forward automatic differentiation (Sacado); the
-   * values come from the same code with plain doubles.
+   * nodal positions: the condensed residual's by hand (it runs on every
+   * cell; tests/cell_kernels checks it against finite differences), the
+   * face kernels by forward automatic differentiation (Sacado) of the same
+   * code that gives their values.
    */
   namespace CellKernels
   {
@@ -65,7 +67,8 @@ namespace softopt
                        const NodalVectors         &u,
                        const NodalVectors         &X);
 
-    /** d(mu . r^e)/dX for condensed_residual(). */
+    /** d(mu . r^e)/dX for condensed_residual(), through the material's
+     * stress, tangent and pressure coupling. */
     NodalVectors
     condensed_residual_shape_derivative(const ReferenceTetrahedron &reference,
                                         const Material      &material,

@@ -159,12 +159,20 @@ namespace softopt
      * and benchmarks. */
     struct Statistics
     {
+      /** Assemblies with the tangent; residual-only ones are n_residuals. */
       unsigned int n_assemblies      = 0;
       unsigned int n_factorizations  = 0;
       unsigned int n_solves          = 0;
+      unsigned int n_residuals       = 0;
       double       assembly_time      = 0;
       double       factorization_time = 0;
       double       solve_time         = 0;
+      double       residual_time      = 0;
+
+      /** "N assemblies T s, N factorizations T s, N solves T s, N
+       * residuals T s" (scripts/bench_iteration reads it). */
+      std::string
+      summary() const;
     };
 
     const Statistics &
