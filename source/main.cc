@@ -11,6 +11,7 @@
 #include <softopt/app/optimization.h>
 #include <softopt/app/settings.h>
 
+#include <algorithm>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -71,14 +72,19 @@ main(int argc, char **argv)
       bool        restart = false;
       if (args[0] == "optimize")
         {
-          restart = args.size() == 3 && args[2] == "--restart";
-          AssertThrow(args.size() == 2 || restart,
+          // --restart before or after the file.
+          std::vector<std::string> rest(args.begin() + 1, args.end());
+          const auto flag = std::find(rest.begin(), rest.end(), "--restart");
+          restart         = flag != rest.end();
+          if (restart)
+            rest.erase(flag);
+          AssertThrow(rest.size() == 1 && rest[0].rfind("--", 0) != 0,
                       dealii::ExcMessage(std::string("\"softopt optimize\" needs "
                                                      "one parameter file and "
                                                      "optionally --restart.\n") +
                                          usage));
           command = args[0];
-          file    = args[1];
+          file    = rest[0];
         }
       else if (args[0] == "analyze" || args[0] == "check-gradients")
         {

@@ -57,12 +57,10 @@ main(int argc, char **argv)
   parallel::fullydistributed::Triangulation<3> triangulation(comm);
   settings.geometry.create_triangulation(triangulation);
   const softopt::DesignConfiguration design(triangulation, settings.geometry);
-  const softopt::NeoHookeanMixed     material(settings.material.youngs_modulus,
-                                          settings.material.poissons_ratio);
   softopt::HyperelasticProblem       problem(triangulation,
                                        design.get_mapping(),
                                        settings.geometry,
-                                       material,
+                                       *settings.material,
                                        settings.loading.pressure_kPa * 1e-3);
   problem.setup_system();
   deallog << "tetrahedra: " << triangulation.n_global_active_cells()
@@ -100,7 +98,7 @@ main(int argc, char **argv)
 
   const double A = 1., B = 2.;
   const double p_over_mu =
-    settings.loading.pressure_kPa * 1e-3 / material.shear_modulus;
+    settings.loading.pressure_kPa * 1e-3 / settings.material->shear_modulus;
   const auto names = settings.tracked_points;
   for (unsigned int r = 1; r < rows.size(); ++r)
     {

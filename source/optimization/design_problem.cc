@@ -122,23 +122,18 @@ namespace softopt
   {
     std::vector<Vector> result(functionals_.size());
     Vector              r, P, dg_da, dg_dX, mu_a, mu_psi;
-    // The last target first: after a warm start a factorization of a
-    // nearby tangent is kept for it.
+    // The last target first: after a warm start its tangent is assembled.
     for (auto target = states.rbegin(); target != states.rend(); ++target)
       {
         const double  load_factor = target->first;
         const Vector &a           = target->second;
         // The adjoint of the condensed system shares the tangent at the
         // target state (symmetric, Eq. adj2). After a warm start the last
-        // target's tangent is assembled here and refined on the kept
-        // factorization of a nearby one; other targets factorize.
+        // target's tangent is assembled (Newton's final residual check) and
+        // refined on the factorization of Newton's last step; other targets
+        // assemble and factorize.
         const bool refine     = load_factor == tangent_at;
         bool       factorized = refine;
-        if (refine)
-          {
-            TimerOutput::Scope scope(timer_output, "adjoint: tangent");
-            problem->assemble(a, load_factor, r, P, true);
-          }
         for (unsigned int i = 0; i < functionals_.size(); ++i)
           {
             if (functionals_[i]->load_factor() != load_factor)
@@ -247,11 +242,12 @@ namespace softopt
       {
         for (auto &[load_factor, a] : states) // ascending
           report.newton_iterations +=
-            settings.newton.solve(*problem, a, load_factor, true).iterations;
+            settings.newton.solve(*problem, a, load_factor).iterations;
         return true;
       }
-    catch (const StepFailure &)
+    catch (const StepFailure &failure)
       {
+        report.warm_start_failure = failure.what();
         states.clear();
         report.newton_iterations = 0;
         return false;

@@ -231,6 +231,9 @@ namespace softopt
           << health.min_J_psi << "  Newton "
           << problem.path_report().newton_iterations
           << (problem.path_report().warm_started ? " (warm)" : "");
+    if (!problem.path_report().warm_start_failure.empty())
+      pcout << " (path from zero: the warm start failed, "
+            << problem.path_report().warm_start_failure << ")";
     if (settings.print_timings)
       pcout << "  " << std::setprecision(3) << wall_time << " s";
     pcout << std::endl;

@@ -1,6 +1,5 @@
 #include <softopt/base/step_failure.h>
 #include <softopt/path/newton_solver.h>
-#include <softopt/solvers/refactorization_rule.h>
 
 #include <cmath>
 #include <sstream>
@@ -74,27 +73,19 @@ namespace softopt
   NewtonSolver::Result
   NewtonSolver::solve(EquilibriumProblem         &problem,
                       EquilibriumProblem::Vector &a,
-                      const double                load_factor,
-                      const bool                  reuse_factorization) const
+                      const double                load_factor) const
   {
     EquilibriumProblem::Vector residual, load, increment;
     Monitor                    monitor(*this);
-    RefactorizationRule rule(reuse_factorization, false);
     for (unsigned int iteration = 0;; ++iteration)
       {
-        const bool with_tangent = rule.certain();
-        problem.assemble(a, load_factor, residual, load, with_tangent);
+        problem.assemble(a, load_factor, residual, load, true);
         const double norm = residual.l2_norm();
         if (monitor.converged(iteration,
                               norm,
                               std::abs(load_factor) * load.l2_norm()))
           return {iteration, norm};
-        if (rule.refactorize(norm))
-          {
-            if (!with_tangent)
-              problem.assemble(a, load_factor, residual, load, true);
-            problem.factorize();
-          }
+        problem.factorize();
         residual *= -1.;
         problem.solve(residual, increment);
         problem.update(a, increment);

@@ -12,6 +12,7 @@
 #include <softopt/shape/shape_filter.h>
 
 #include <map>
+#include <string>
 #include <memory>
 #include <vector>
 
@@ -100,11 +101,13 @@ namespace softopt
     void
     set_target_states(const std::map<double, Vector> &states);
 
-    /** What the last evaluate() did: whether it warm-started, and the
-     * Newton iterations over all targets. */
+    /** What the last evaluate() did: whether it warm-started (else why
+     * the warm start failed, if it was tried), and the Newton iterations
+     * over all targets. */
     struct PathReport
     {
       bool         warm_started      = false;
+      std::string  warm_start_failure;
       unsigned int newton_iterations = 0;
     };
 

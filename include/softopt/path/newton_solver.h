@@ -55,22 +55,17 @@ namespace softopt
     };
 
     /**
-     * Solves r_a(a, lambda) = 0 starting from @p a. Throws StepFailure when
-     * the iteration does not converge. Plain Newton (the default) leaves
-     * the tangent at the converged state assembled, not yet factorized.
-     * With @p reuse_factorization (a warm start from a nearby state),
-     * modified Newton: the first step factorizes the tangent at @p a (the
-     * previous design's factorization does not serve: its step contracts
-     * the residual by less than 3 and leaves a state from which Newton
-     * diverges), later steps keep that factorization while it contracts the
-     * residual by at least 4 per step and assemble only the residual, and
-     * the tangent the problem holds on return is of an earlier state.
+     * Solves r_a(a, lambda) = 0 starting from @p a by Newton's method, each
+     * step on a fresh factorization. On return the tangent at the converged
+     * state is assembled (not yet factorized) and the factorization held is
+     * that of the last step, a nearby tangent. Throws StepFailure when the
+     * iteration does not converge. (Modified Newton on kept factorizations
+     * was measured for warm starts and dropped: doc/benchmarks.md.)
      */
     Result
     solve(EquilibriumProblem         &problem,
           EquilibriumProblem::Vector &a,
-          const double                load_factor,
-          const bool                  reuse_factorization = false) const;
+          const double                load_factor) const;
 
     /** Relative residual tolerance. */
     double tolerance = 1e-8;

@@ -9,8 +9,9 @@ namespace softopt
    * When a modified Newton iteration factorizes its tangent anew: a kept
    * factorization (of the previous design's tangent, or of an earlier
    * step) serves while it reduces the residual by at least a factor 4 per
-   * step. Without reuse every step factorizes (plain Newton). Shared by
-   * the warm-started equilibrium solves and the shape filter.
+   * step. Without reuse every step factorizes (plain Newton). Used by the
+   * shape filter; the physics' warm starts measured better with plain
+   * Newton (doc/benchmarks.md).
    */
   class RefactorizationRule
   {
