@@ -437,14 +437,6 @@ namespace softopt
 
 
 
-  bool
-  HyperelasticProblem::has_factorization() const
-  {
-    return direct_solver.has_factorization();
-  }
-
-
-
   void
   HyperelasticProblem::solve_refined(const Vector &b, Vector &x)
   {

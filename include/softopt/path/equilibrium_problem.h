@@ -41,10 +41,6 @@ namespace softopt
     virtual void
     factorize() = 0;
 
-    /** Whether a factorization (of some earlier tangent) is held. */
-    virtual bool
-    has_factorization() const = 0;
-
     /** x = K^{-1} b with the last factorization (constrained entries zero).
      * For a condensed system, K, b and x hold only the retained unknowns. */
     virtual void

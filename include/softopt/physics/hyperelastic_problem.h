@@ -74,9 +74,6 @@ namespace softopt
     void
     solve(const Vector &b, Vector &x) const override;
 
-    bool
-    has_factorization() const override;
-
     unsigned int
     n_negative_pivots() const override;
 
