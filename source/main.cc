@@ -48,7 +48,11 @@ main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
-  const std::vector<std::string> args(argv + 1, argv + argc);
+  // --restart may stand anywhere after the command.
+  std::vector<std::string> args(argv + 1, argv + argc);
+  const bool restart =
+    std::find(args.begin(), args.end(), "--restart") != args.end();
+  args.erase(std::remove(args.begin(), args.end(), "--restart"), args.end());
 
   try
     {
@@ -69,22 +73,15 @@ main(int argc, char **argv)
         }
 
       std::string command, file;
-      bool        restart = false;
       if (args[0] == "optimize")
         {
-          // --restart before or after the file.
-          std::vector<std::string> rest(args.begin() + 1, args.end());
-          const auto flag = std::find(rest.begin(), rest.end(), "--restart");
-          restart         = flag != rest.end();
-          if (restart)
-            rest.erase(flag);
-          AssertThrow(rest.size() == 1 && rest[0].rfind("--", 0) != 0,
+          AssertThrow(args.size() == 2,
                       dealii::ExcMessage(std::string("\"softopt optimize\" needs "
                                                      "one parameter file and "
                                                      "optionally --restart.\n") +
                                          usage));
           command = args[0];
-          file    = rest[0];
+          file    = args[1];
         }
       else if (args[0] == "analyze" || args[0] == "check-gradients")
         {
@@ -109,6 +106,10 @@ main(int argc, char **argv)
         command = settings.command;
       if (command == "check-gradients")
         return softopt::run_gradient_check(settings);
+      AssertThrow(!restart || command == "optimize",
+                  dealii::ExcMessage("--restart continues \"optimize\" only, "
+                                     "but the command is \"" + command +
+                                     "\".\n" + usage));
       if (command == "optimize")
         return softopt::run_optimization(settings, restart);
       return softopt::run_analysis(settings);

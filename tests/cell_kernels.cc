@@ -79,7 +79,5 @@ main(int argc, char **argv)
   deallog << "neo-Hookean, nu = 0.49" << std::endl;
   check(*neo_hookean(1.2, 0.49));
   deallog << "Yeoh, nu = 0.4999" << std::endl;
-  check(*softopt::Materials::create("Yeoh",
-                                    {{"Yeoh coefficients", "0.2, 0.05, 0.01"},
-                                     {"Poisson's ratio", "0.4999"}}));
+  check(*yeoh("0.2, 0.05, 0.01", 0.4999));
 }

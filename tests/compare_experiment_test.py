@@ -134,10 +134,24 @@ class Formulas(unittest.TestCase):
             np.testing.assert_allclose(v, 100.0 * P, rtol=1e-14)
 
 
-class CommandLine(unittest.TestCase):
+class ScriptRun(unittest.TestCase):
+    """A temporary folder, and the script run in it."""
+
     def setUp(self):
         self.tmp = tempfile.TemporaryDirectory()
         self.dir = self.tmp.name
+
+    def tearDown(self):
+        self.tmp.cleanup()
+
+    def run_cli(self, *args):
+        return subprocess.run([sys.executable, SCRIPT, *args],
+                              capture_output=True, text=True, cwd=self.dir)
+
+
+class CommandLine(ScriptRun):
+    def setUp(self):
+        super().setUp()
         self.sim = os.path.join(self.dir, "load_path.csv")
         # load_path.csv in softopt's layout, with an extra trailing column.
         header = ("step,load_factor,pressure_kPa,cavity_volume_mm3,"
@@ -163,13 +177,6 @@ class CommandLine(unittest.TestCase):
             write_csv(path, ["time_s", p_name, "syringe_volume_mm3"],
                       [P, p * p_factor, syringe_volume(P)])
             self.runs.append(path)
-
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def run_cli(self, *args):
-        return subprocess.run([sys.executable, SCRIPT, *args],
-                              capture_output=True, text=True, cwd=self.dir)
 
     def test_end_to_end(self):
         out = os.path.join(self.dir, "out")
@@ -274,10 +281,9 @@ def simulated_curve(name, p):
                             for c in range(3)])
 
 
-class Markers(unittest.TestCase):
+class Markers(ScriptRun):
     def setUp(self):
-        self.tmp = tempfile.TemporaryDirectory()
-        self.dir = self.tmp.name
+        super().setUp()
         self.sim = os.path.join(self.dir, "load_path.csv")
         n = P_SIM.size
         dv = cavity_curve(P_SIM)
@@ -310,19 +316,20 @@ class Markers(unittest.TestCase):
                   [np.arange(P.size), 1000 * P, tip[:, 0], tip[:, 1],
                    tip[:, 2], 1000 * side[:, 0], 1000 * side[:, 2]])
 
-    def tearDown(self):
-        self.tmp.cleanup()
-
-    def run_cli(self, *args):
-        return subprocess.run([sys.executable, SCRIPT, *args],
-                              capture_output=True, text=True, cwd=self.dir)
-
     def test_column_names(self):
         self.assertEqual(ce.split_marker_column("tip_ux_mm"), ("tip", 0, "mm"))
         self.assertEqual(ce.split_marker_column("left_2_uZ [µm]"),
                          ("left_2", 2, "um"))
         self.assertEqual(ce.split_marker_column("tip_uy"), ("tip", 1, None))
         self.assertIsNone(ce.split_marker_column("frame"))
+
+    def test_marker_named_like_a_quantity(self):
+        path = os.path.join(self.dir, "port.csv")
+        write_csv(path, ["pressure_kPa", "pressure_port_ux_mm"],
+                  [np.array([0.0, 1.0]), np.array([0.0, 0.5])])
+        p, markers = ce.read_markers(path)
+        self.assertEqual(list(p), [0.0, 1.0])
+        self.assertEqual(list(markers["pressure_port"][0]), [0.0, 0.5])
 
     def test_differences_vanish(self):
         p_sim, points = ce.read_tracked(

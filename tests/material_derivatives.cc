@@ -87,9 +87,7 @@ main(int argc, char **argv)
   deallog << "neo-Hookean, E = 1.2, nu = 0.49" << std::endl;
   check(*neo_hookean(1.2, 0.49));
   deallog << "Yeoh, C = (0.2, 0.05, 0.01), nu = 0.49" << std::endl;
-  check(*softopt::Materials::create("Yeoh",
-                                    {{"Yeoh coefficients", "0.2, 0.05, 0.01"},
-                                     {"Poisson's ratio", "0.49"}}));
+  check(*yeoh("0.2, 0.05, 0.01", 0.49));
 
   // J - 1 from the invariants of H keeps its digits where det(F) - 1 cannot.
   Tensor<2, 3> H;

@@ -4,6 +4,7 @@
 #ifndef softopt_tests_mma_tests_h
 #define softopt_tests_mma_tests_h
 
+#include <softopt/io/csv_writer.h>
 #include <softopt/optimization/mma.h>
 
 #include "tests.h"
@@ -63,12 +64,7 @@ namespace softopt_tests
   inline std::string
   fixed(const double value)
   {
-    double r = std::round(value * 1e6) / 1e6;
-    if (r == 0)
-      r = 0;
-    std::ostringstream s;
-    s << std::fixed << std::setprecision(6) << r;
-    return s.str();
+    return softopt::CsvWriter::fixed(value, 6);
   }
 
   /**

@@ -40,19 +40,15 @@ namespace
   std::vector<std::vector<std::string>>
   read_history(const std::string &file)
   {
-    std::ifstream                         in(file);
-    std::vector<std::vector<std::string>> rows;
-    std::vector<std::string>              header;
-    for (std::string line; std::getline(in, line);)
+    std::vector<std::vector<std::string>> rows = read_csv(file);
+    const std::vector<std::string>        header = rows.at(0);
+    for (auto &fields : rows)
       {
-        std::vector<std::string> fields = Utilities::split_string_list(line, ',');
-        if (header.empty())
-          header = fields;
         std::vector<std::string> kept;
         for (unsigned int i = 0; i < fields.size(); ++i)
           if (header[i] != "wall_time_s")
             kept.push_back(fields[i]);
-        rows.push_back(kept);
+        fields = kept;
       }
     return rows;
   }

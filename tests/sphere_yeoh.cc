@@ -19,8 +19,7 @@ main(int argc, char **argv)
   TestLog                          log;
 
   const std::vector<double> C{0.2, 0.05, 0.01};
-  const auto                material = softopt::Materials::create(
-    "Yeoh", {{"Yeoh coefficients", "0.2, 0.05, 0.01"}, {"Poisson's ratio", "0.4999"}});
+  const auto                material = yeoh("0.2, 0.05, 0.01", 0.4999);
   const auto dW_dI1 = [&](const double I1) {
     const double x = I1 - 3;
     return C[0] + 2 * C[1] * x + 3 * C[2] * x * x;

@@ -16,6 +16,8 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <vector>
+#include <string>
 
 namespace softopt_tests
 {
@@ -53,6 +55,27 @@ namespace softopt_tests
       "neo-Hookean",
       {{"Young's modulus", Utilities::to_string(youngs_modulus)},
        {"Poisson's ratio", Utilities::to_string(nu)}});
+  }
+
+  /** The Yeoh material with C_10, C_20, ... (MPa, comma-separated). */
+  inline std::shared_ptr<const softopt::Material>
+  yeoh(const std::string &coefficients, const double nu)
+  {
+    return softopt::Materials::create(
+      "Yeoh",
+      {{"Yeoh coefficients", coefficients},
+       {"Poisson's ratio", Utilities::to_string(nu)}});
+  }
+
+  /** The rows of a CSV file written by CsvWriter, split at commas. */
+  inline std::vector<std::vector<std::string>>
+  read_csv(const std::string &file)
+  {
+    std::ifstream                         in(file);
+    std::vector<std::vector<std::string>> rows;
+    for (std::string line; std::getline(in, line);)
+      rows.push_back(Utilities::split_string_list(line, ','));
+    return rows;
   }
 
   /** A number with two significant digits (for errors that must be small). */

@@ -30,21 +30,6 @@
 
 using namespace softopt_tests;
 
-namespace
-{
-  /** The rows of a CSV file written by CsvWriter (no comments). */
-  std::vector<std::vector<std::string>>
-  read_csv(const std::string &file)
-  {
-    std::ifstream                         in(file);
-    std::vector<std::vector<std::string>> rows;
-    std::string                           line;
-    while (std::getline(in, line))
-      rows.push_back(Utilities::split_string_list(line, ','));
-    return rows;
-  }
-} // namespace
-
 int
 main(int argc, char **argv)
 {
@@ -99,7 +84,7 @@ main(int argc, char **argv)
   const double A = 1., B = 2.;
   const double p_over_mu =
     settings.loading.pressure_kPa * 1e-3 / settings.material->shear_modulus;
-  const auto names = settings.tracked_points;
+  const auto &names = settings.tracked_points;
   for (unsigned int r = 1; r < rows.size(); ++r)
     {
       const double lambda = std::stod(rows[r][1]);

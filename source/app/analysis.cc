@@ -115,7 +115,9 @@ namespace softopt
       load_path.add_row(row);
       if (tracked)
         {
-          std::vector<std::string> tracked_row(row.begin(), row.begin() + 3);
+          std::vector<std::string> tracked_row{std::to_string(point.step),
+                                               CsvWriter::format(point.load_factor),
+                                               CsvWriter::format(p_kPa)};
           for (const auto &entry : tracked->csv_entries(state))
             tracked_row.push_back(entry);
           tracked_csv->add_row(tracked_row);

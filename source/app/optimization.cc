@@ -5,6 +5,7 @@
 #include <softopt/app/optimization.h>
 #include <softopt/app/output_directory.h>
 #include <softopt/io/stl_writer.h>
+#include <softopt/io/tracked_points.h>
 #include <softopt/optimization/shape_optimizer.h>
 
 #include <cstdlib>
@@ -54,6 +55,13 @@ namespace softopt
           << " tetrahedra, "
           << problem.design_configuration().get_dof_handler().n_dofs()
           << " design variables" << std::endl;
+    // The final analysis tracks these points on the final design; say now,
+    // not hours later, where they land on the initial one.
+    if (!settings.tracked_points.empty())
+      TrackedPoints(problem.hyperelastic_problem(),
+                    problem.design_configuration(),
+                    settings.tracked_points)
+        .print(pcout);
 
     // Input is checked: only now touch the output directory.
     const OutputDirectory out(settings.output_directory, MPI_COMM_WORLD);

@@ -2,6 +2,7 @@
 
 #include <softopt/io/csv_writer.h>
 
+#include <cmath>
 #include <iomanip>
 #include <sstream>
 
@@ -47,6 +48,20 @@ namespace softopt
   {
     std::ostringstream s;
     s << std::setprecision(10) << value;
+    return s.str();
+  }
+
+
+
+  std::string
+  CsvWriter::fixed(const double value, const unsigned int decimals)
+  {
+    const double scale   = std::pow(10., decimals);
+    double       rounded = std::round(value * scale) / scale;
+    if (rounded == 0)
+      rounded = 0;
+    std::ostringstream s;
+    s << std::fixed << std::setprecision(decimals) << rounded;
     return s.str();
   }
 } // namespace softopt

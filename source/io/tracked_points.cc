@@ -3,13 +3,10 @@
 
 #include <softopt/io/csv_writer.h>
 #include <softopt/io/tracked_points.h>
+#include <softopt/shape/cell_nodes.h>
 
 #include <algorithm>
-#include <array>
-#include <cmath>
-#include <iomanip>
 #include <limits>
-#include <sstream>
 
 namespace softopt
 {
@@ -44,17 +41,11 @@ namespace softopt
       return n_fixed > 0 && n_fixed < 3;
     }
 
-    /** A length in mm to the micrometre, without a sign on zero (mesh
-     * coordinates on a symmetry plane carry round-off like -3e-32). */
+    /** A length in mm to the micrometre. */
     std::string
     format_mm(const double x)
     {
-      double rounded = std::round(x * 1e3) / 1e3;
-      if (rounded == 0)
-        rounded = 0;
-      std::ostringstream s;
-      s << std::fixed << std::setprecision(3) << rounded;
-      return s.str();
+      return CsvWriter::fixed(x, 3);
     }
 
     std::string
@@ -78,34 +69,32 @@ namespace softopt
   TrackedPoints::TrackedPoints(const HyperelasticProblem     &problem,
                                const DesignConfiguration     &design,
                                const std::vector<NamedPoint> &requested)
-    : problem(problem)
-    , owned(requested.size())
   {
     const unsigned int n        = requested.size();
     const MPI_Comm     comm     = problem.get_communicator();
-    const unsigned int rank     = Utilities::MPI::this_mpi_process(comm);
     const auto        &X        = design.positions();
     const auto         on_face  = face_nodes();
     const auto        &geometry = problem.get_geometry();
 
-    // The nearest node on this rank's boundary faces.
-    const double          none = std::numeric_limits<double>::max();
-    std::vector<double>   distance(n, none);
+    // The nearest node on this rank's boundary faces; a node on several
+    // faces takes the largest of them, so that face_size depends neither
+    // on the order of the cells nor on the partition.
+    std::vector<double>   distance(n, std::numeric_limits<double>::max());
     std::vector<double>   face_size(n, 0.);
     std::vector<Point<3>> position(n);
+    std::vector<std::array<types::global_dof_index, 3>> node_dofs(n);
     for (const auto &cell : problem.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              !is_symmetry_plane(geometry, cell->face(f)->boundary_id()))
+      if (cell->is_locally_owned() && cell->at_boundary())
+        {
+          const CellNodes    cell_nodes(cell,
+                                     same_cell(cell, design.get_dof_handler()));
+          const NodalVectors x = cell_nodes.design(X);
+          for (const unsigned int f : cell->face_indices())
             {
-              Assert(cell->reference_cell() == ReferenceCells::Tetrahedron,
-                     ExcNotImplemented());
-              const CellNodes    cell_nodes(cell,
-                                         same_cell(cell,
-                                                   design.get_dof_handler()));
-              const NodalVectors x            = cell_nodes.design(X);
-              double             longest_edge = 0;
+              if (!cell->face(f)->at_boundary() ||
+                  is_symmetry_plane(geometry, cell->face(f)->boundary_id()))
+                continue;
+              double longest_edge = 0;
               for (unsigned int i = 0; i < 3; ++i)
                 longest_edge = std::max(
                   longest_edge,
@@ -120,54 +109,51 @@ namespace softopt
                         distance[k]  = d;
                         face_size[k] = longest_edge;
                         position[k]  = Point<3>(x[node]);
-                        owned[k].emplace(cell_nodes, node);
+                        node_dofs[k] = cell_nodes.displacement_dofs(node);
                       }
+                    else if (d == distance[k])
+                      face_size[k] = std::max(face_size[k], longest_edge);
                   }
             }
+        }
 
-    // Global min-loc: the nearest over all ranks, the lowest rank on a tie.
-    // The owner's position and face size reach every rank by a sum to which
-    // only the owner contributes.
-    std::vector<double> nearest(n);
-    Utilities::MPI::min(distance, comm, nearest);
-    std::vector<unsigned int> owner(n);
-    for (unsigned int k = 0; k < n; ++k)
-      owner[k] = distance[k] < none && distance[k] == nearest[k] ?
-                   rank :
-                   numbers::invalid_unsigned_int;
-    Utilities::MPI::min(owner, comm, owner);
-    std::vector<double> shared(4 * n, 0.);
+    // The nearest over all ranks (MPI_MINLOC: the lowest rank on a tie);
+    // that rank's node and DoFs, and the largest face size of the ranks at
+    // that distance, reach every rank.
+    const auto nearest = Utilities::MPI::min_max_avg(distance, comm);
+    const unsigned int  rank = Utilities::MPI::this_mpi_process(comm);
+    std::vector<double> shared(6 * n, 0.), sizes(n, 0.);
     for (unsigned int k = 0; k < n; ++k)
       {
-        AssertThrow(owner[k] != numbers::invalid_unsigned_int,
+        AssertThrow(nearest[k].min < std::numeric_limits<double>::max(),
                     ExcMessage("Tracked point \"" + requested[k].name +
                                "\": the mesh has no boundary face to put it "
                                "on."));
-        if (owner[k] != rank)
-          {
-            owned[k].reset();
-            continue;
-          }
+        if (distance[k] == nearest[k].min)
+          sizes[k] = face_size[k];
+        if (nearest[k].min_index != rank)
+          continue;
         for (unsigned int c = 0; c < 3; ++c)
-          shared[4 * k + c] = position[k][c];
-        shared[4 * k + 3] = face_size[k];
+          {
+            shared[6 * k + c]     = position[k][c];
+            shared[6 * k + 3 + c] = node_dofs[k][c]; // exact below 2^53
+          }
       }
     Utilities::MPI::sum(shared, comm, shared);
+    Utilities::MPI::max(sizes, comm, sizes);
     for (unsigned int k = 0; k < n; ++k)
-      nodes.push_back(
-        {requested[k].name,
-         requested[k].position,
-         Point<3>(shared[4 * k], shared[4 * k + 1], shared[4 * k + 2]),
-         nearest[k],
-         shared[4 * k + 3]});
-  }
-
-
-
-  const std::vector<TrackedPoints::SurfaceNode> &
-  TrackedPoints::surface_nodes() const
-  {
-    return nodes;
+      {
+        nodes.push_back(
+          {requested[k].name,
+           requested[k].position,
+           Point<3>(shared[6 * k], shared[6 * k + 1], shared[6 * k + 2]),
+           nearest[k].min,
+           sizes[k]});
+        std::array<types::global_dof_index, 3> node;
+        for (unsigned int c = 0; c < 3; ++c)
+          node[c] = static_cast<types::global_dof_index>(shared[6 * k + 3 + c]);
+        dofs.push_back(node);
+      }
   }
 
 
@@ -198,17 +184,13 @@ namespace softopt
   std::vector<Tensor<1, 3>>
   TrackedPoints::displacements(const HyperelasticProblem::Vector &a) const
   {
-    const auto          a_ghost = problem.ghosted(a);
+    // Each rank contributes the entries it owns.
     std::vector<double> u(3 * nodes.size(), 0.);
     for (unsigned int k = 0; k < nodes.size(); ++k)
-      if (owned[k])
-        {
-          const auto &[cell_nodes, node] = *owned[k];
-          const Tensor<1, 3> value = cell_nodes.displacement(a_ghost)[node];
-          for (unsigned int c = 0; c < 3; ++c)
-            u[3 * k + c] = value[c];
-        }
-    Utilities::MPI::sum(u, problem.get_communicator(), u);
+      for (unsigned int c = 0; c < 3; ++c)
+        if (a.in_local_range(dofs[k][c]))
+          u[3 * k + c] = a(dofs[k][c]);
+    Utilities::MPI::sum(u, a.get_mpi_communicator(), u);
     std::vector<Tensor<1, 3>> result(nodes.size());
     for (unsigned int k = 0; k < nodes.size(); ++k)
       result[k] = Tensor<1, 3>({u[3 * k], u[3 * k + 1], u[3 * k + 2]});

@@ -122,53 +122,48 @@ namespace softopt
         return cross_product_3d(xs, xt);
       }
 
-      template <typename Number>
-      Nodes<Number>
-      residual(const ReferenceTetrahedron &reference,
-               const Material      &material,
-               const NodalVectors         &u,
-               const Nodes<Number>        &X)
+      /** What the condensed residual of a cell and its shape derivative
+       * share, at each quadrature point: grad N, H = grad u and dV in the
+       * configuration X, J - 1; and the cell's volume and int (J - 1) dV. */
+      struct CellState
       {
-        const unsigned int n_q = reference.cell_points.size();
-        std::vector<Nodes<Number>>        grad_N(n_q);
-        std::vector<Tensor<2, 3, Number>> H(n_q);
-        std::vector<Number>               dV(n_q);
-        Number                            volume = 0, dilatation = 0;
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const auto &point = reference.cell_points[q];
-            const Tensor<2, 3, Number> J       = jacobian(point, X);
-            const Tensor<2, 3, Number> J_inv_T = transpose(invert(J));
-            for (unsigned int a = 0; a < 10; ++a)
-              grad_N[q][a] = J_inv_T * point.gradients[a];
-            for (unsigned int a = 0; a < 10; ++a)
-              for (unsigned int i = 0; i < 3; ++i)
-                for (unsigned int j = 0; j < 3; ++j)
-                  H[q][i][j] += u[a][i] * grad_N[q][a][j];
-            dV[q] = determinant(J) * point.weight;
-            volume += dV[q];
-            const Number J_minus_1 = jacobian_minus_one(H[q]);
-            dilatation += J_minus_1 * dV[q];
-          }
-        // r_p = 0 solved for the element pressure (Eq. statCond1).
-        const Number p = -material.bulk_modulus * dilatation / volume;
+        CellState(const ReferenceTetrahedron &reference,
+                  const NodalVectors         &u,
+                  const NodalVectors         &X)
+          : grad_N(reference.cell_points.size())
+          , H(reference.cell_points.size())
+          , dV(reference.cell_points.size())
+          , J_minus_1(reference.cell_points.size())
+        {
+          for (unsigned int q = 0; q < grad_N.size(); ++q)
+            {
+              const auto        &point   = reference.cell_points[q];
+              const Tensor<2, 3> J       = jacobian(point, X);
+              const Tensor<2, 3> J_inv_T = transpose(invert(J));
+              for (unsigned int a = 0; a < 10; ++a)
+                {
+                  grad_N[q][a] = J_inv_T * point.gradients[a];
+                  H[q] += outer_product(u[a], grad_N[q][a]);
+                }
+              dV[q]        = determinant(J) * point.weight;
+              J_minus_1[q] = jacobian_minus_one(H[q]);
+              volume += dV[q];
+              dilatation += J_minus_1[q] * dV[q];
+            }
+        }
 
-        Nodes<Number> r;
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            Tensor<2, 3, Number> F = H[q];
-            for (unsigned int i = 0; i < 3; ++i)
-              F[i][i] += 1.;
-            const Tensor<2, 3, Number> P = material.first_piola(F, p);
-            for (unsigned int a = 0; a < 10; ++a)
-              {
-                const Tensor<1, 3, Number> force = P * grad_N[q][a];
-                for (unsigned int i = 0; i < 3; ++i)
-                  r[a][i] += force[i] * dV[q];
-              }
-          }
-        return r;
-      }
+        /** r_p = 0 solved for the element pressure (Eq. statCond1). */
+        double
+        pressure(const Material &material) const
+        {
+          return -material.bulk_modulus * dilatation / volume;
+        }
+
+        std::vector<NodalVectors> grad_N;
+        std::vector<Tensor<2, 3>> H;
+        std::vector<double>       dV, J_minus_1;
+        double                    volume = 0, dilatation = 0;
+      };
 
       template <typename Number>
       Nodes<Number>
@@ -260,12 +255,6 @@ namespace softopt
         return m;
       }
 
-      Nodes<double>
-      as_nodes(const NodalVectors &v)
-      {
-        return v;
-      }
-
       /** mu . v over the ten nodes of a cell: the adjoint-weighted sum
        * whose derivative is mu^T dv/dX. */
       AD
@@ -283,11 +272,21 @@ namespace softopt
 
     NodalVectors
     condensed_residual(const ReferenceTetrahedron &reference,
-                       const Material      &material,
+                       const Material             &material,
                        const NodalVectors         &u,
                        const NodalVectors         &X)
     {
-      return residual(reference, material, u, as_nodes(X));
+      const CellState cell(reference, u, X);
+      const double    p = cell.pressure(material);
+      NodalVectors    r{};
+      for (unsigned int q = 0; q < cell.dV.size(); ++q)
+        {
+          const Tensor<2, 3> P =
+            material.first_piola(unit_symmetric_tensor<3>() + cell.H[q], p);
+          for (unsigned int a = 0; a < 10; ++a)
+            r[a] += P * cell.grad_N[q][a] * cell.dV[q];
+        }
+      return r;
     }
 
 
@@ -308,28 +307,16 @@ namespace softopt
       // adds (int dP/dp~ : G dV) dp~ with
       //   dp~ = -K / |Omega^e| int (H^T dP/dp~ + (J - 1 - D/|Omega^e|) I) : grad V dV
       // (dP/dp~ = -J F^{-T}). d/dV_c of Sigma : grad V is Sigma grad N_c.
-      const unsigned int        n_q = reference.cell_points.size();
-      std::vector<NodalVectors> grad_N(n_q);
-      std::vector<Tensor<2, 3>> H(n_q), G(n_q);
-      std::vector<double>       dV(n_q), J_minus_1(n_q);
-      double                    volume = 0, dilatation = 0;
+      const CellState    cell(reference, u, X);
+      const unsigned int n_q = cell.dV.size();
+      const double       p   = cell.pressure(material);
+      const auto &grad_N = cell.grad_N;
+      const auto &H      = cell.H;
+      const auto &dV     = cell.dV;
+      std::vector<Tensor<2, 3>> G(n_q);
       for (unsigned int q = 0; q < n_q; ++q)
-        {
-          const auto        &point   = reference.cell_points[q];
-          const Tensor<2, 3> J       = jacobian(point, as_nodes(X));
-          const Tensor<2, 3> J_inv_T = transpose(invert(J));
-          for (unsigned int a = 0; a < 10; ++a)
-            {
-              grad_N[q][a] = J_inv_T * point.gradients[a];
-              H[q] += outer_product(u[a], grad_N[q][a]);
-              G[q] += outer_product(mu[a], grad_N[q][a]);
-            }
-          dV[q]        = determinant(J) * point.weight;
-          J_minus_1[q] = jacobian_minus_one(H[q]);
-          volume += dV[q];
-          dilatation += J_minus_1[q] * dV[q];
-        }
-      const double p = -material.bulk_modulus * dilatation / volume;
+        for (unsigned int a = 0; a < 10; ++a)
+          G[q] += outer_product(mu[a], grad_N[q][a]);
 
       NodalVectors              d{};
       std::vector<Tensor<2, 3>> coupling(n_q);
@@ -352,12 +339,13 @@ namespace softopt
             d[c] += Sigma * grad_N[q][c] * dV[q];
         }
       const double factor =
-        -material.bulk_modulus / volume * pressure_sensitivity;
+        -material.bulk_modulus / cell.volume * pressure_sensitivity;
       for (unsigned int q = 0; q < n_q; ++q)
         {
           const Tensor<2, 3> Pi =
             transpose(H[q]) * coupling[q] +
-            (J_minus_1[q] - dilatation / volume) * unit_symmetric_tensor<3>();
+            (cell.J_minus_1[q] - cell.dilatation / cell.volume) *
+              unit_symmetric_tensor<3>();
           for (unsigned int c = 0; c < 10; ++c)
             d[c] += factor * (Pi * grad_N[q][c]) * dV[q];
         }
@@ -372,7 +360,7 @@ namespace softopt
                   const double                p_hat,
                   const NodalVectors         &x)
     {
-      return load(reference, face, p_hat, as_nodes(x));
+      return load(reference, face, p_hat, x);
     }
 
 
@@ -396,7 +384,7 @@ namespace softopt
                   NodalVectors               *d_dx)
     {
       if (d_dx == nullptr)
-        return volume(reference, face, as_nodes(x));
+        return volume(reference, face, x);
       const AD V = volume(reference, face, independent(x));
       *d_dx      = derivatives(V);
       return V.val();

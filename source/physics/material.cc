@@ -1,6 +1,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <softopt/base/registry.h>
 #include <softopt/physics/hyperelastic_parts.h>
 #include <softopt/physics/material.h>
 
@@ -59,23 +60,14 @@ namespace softopt
 
   namespace Materials
   {
-    namespace
-    {
-      std::map<std::string, Registration> &
-      registry()
-      {
-        static std::map<std::string, Registration> models;
-        return models;
-      }
-    } // namespace
+    using Models = Registry<Registration>;
 
 
 
     bool
     register_material(const Registration &registration)
     {
-      registry()[registration.name] = registration;
-      return true;
+      return Models::add(registration);
     }
 
 
@@ -83,20 +75,14 @@ namespace softopt
     void
     declare_parameters(ParameterHandler &prm)
     {
-      std::string names, docs;
-      for (const auto &[name, model] : registry())
-        {
-          names += (names.empty() ? "" : "|") + name;
-          docs += "\n  " + name + ": " + model.description;
-        }
       prm.enter_subsection("Material");
       prm.declare_entry("Model",
                         "neo-Hookean",
-                        Patterns::Selection(names),
+                        Patterns::Selection(Models::selection()),
                         "The isochoric part W_iso of the strain energy; the "
                         "volumetric part and the condensed pressure are the "
                         "same for every model:" +
-                          docs);
+                          Models::documentation());
       prm.declare_entry("Poisson's ratio",
                         "0.49",
                         Patterns::Double(),
@@ -104,7 +90,7 @@ namespace softopt
                         "every model: the bulk modulus is K = 2 G_0 (1 + nu) / "
                         "(3 (1 - 2 nu)) with G_0 the model's shear modulus at "
                         "small strain (K = E / (3 (1 - 2 nu))); 0.49 for PVS.");
-      for (const auto &[name, model] : registry())
+      for (const auto &[name, model] : Models::all())
         model.declare_parameters(prm);
       prm.leave_subsection();
     }
@@ -124,11 +110,10 @@ namespace softopt
                              " (0.5 itself is incompressible, which this "
                              "mixed formulation approaches but cannot "
                              "reach)."));
-      const auto it = registry().find(name);
-      AssertThrow(it != registry().end(),
-                  ExcMessage(input.where("Material", "Model") +
-                             ": unknown material model \"" + name + "\"."));
-      auto material = it->second.create(prm, input, nu);
+      auto material = Models::find(name,
+                                   "material model",
+                                   input.where("Material", "Model"))
+                        .create(prm, input, nu);
       prm.leave_subsection();
       return material;
     }

@@ -89,6 +89,14 @@ namespace softopt
 
 
 
+  const std::array<types::global_dof_index, 3> &
+  CellNodes::displacement_dofs(const unsigned int node) const
+  {
+    return u_dofs[node];
+  }
+
+
+
   const DoFHandler<3>::active_cell_iterator &
   CellNodes::cell() const
   {

@@ -32,6 +32,11 @@ namespace softopt
     static std::string
     format(const double value);
 
+    /** A number rounded to @p decimals, without the sign of a rounded
+     * zero (-3e-32 on a symmetry plane prints as 0.000). */
+    static std::string
+    fixed(const double value, const unsigned int decimals);
+
   private:
     std::ofstream out;
   };

@@ -6,10 +6,9 @@
 
 #include <softopt/base/input.h>
 #include <softopt/physics/hyperelastic_problem.h>
-#include <softopt/shape/cell_nodes.h>
 #include <softopt/shape/design_configuration.h>
 
-#include <optional>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -27,7 +26,7 @@ namespace softopt
    * not searched; their edges belong to surface faces as well. At a node the
    * P2 displacement is its nodal value, so nothing is interpolated. Under
    * MPI each rank searches its locally owned cells and the nearest node
-   * wins (the lowest rank on a tie); that rank provides the values.
+   * wins (the lowest rank on a tie); every rank then knows its DoFs.
    */
   class TrackedPoints
   {
@@ -56,19 +55,10 @@ namespace softopt
       far() const;
     };
 
-    /** The chosen nodes, in the order of the request, on every rank. */
-    const std::vector<SurfaceNode> &
-    surface_nodes() const;
-
     /** One line per point: the node chosen and its distance, with a warning
      * for a far() one. */
     void
     print(const ConditionalOStream &out) const;
-
-    /** The displacement u in mm at each node for the state @p a (locally
-     * owned entries), on every rank. Collective. */
-    std::vector<Tensor<1, 3>>
-    displacements(const HyperelasticProblem::Vector &a) const;
 
     /** The columns of tracked_points.csv after step, load_factor and
      * pressure_kPa: per name <name>_X_mm, _Y_mm, _Z_mm (the node) and
@@ -81,12 +71,15 @@ namespace softopt
     csv_entries(const HyperelasticProblem::Vector &a) const;
 
   private:
-    const HyperelasticProblem &problem;
-    std::vector<SurfaceNode>   nodes;
+    std::vector<SurfaceNode> nodes;
 
-    /** Per point, on the rank that provides its values: the cell holding
-     * the node and the node's index in the cell; empty elsewhere. */
-    std::vector<std::optional<std::pair<CellNodes, unsigned int>>> owned;
+    /** Per point, the node's three displacement DoFs (on every rank). */
+    std::vector<std::array<types::global_dof_index, 3>> dofs;
+
+    /** The displacement u in mm at each node for the state @p a, on every
+     * rank. Collective. */
+    std::vector<Tensor<1, 3>>
+    displacements(const HyperelasticProblem::Vector &a) const;
   };
 } // namespace softopt
 

@@ -41,6 +41,10 @@ namespace softopt
     void
     add_to_design(const NodalVectors &values, PETScWrappers::MPI::Vector &v) const;
 
+    /** The three displacement DoFs of node @p node. */
+    const std::array<types::global_dof_index, 3> &
+    displacement_dofs(const unsigned int node) const;
+
     /** The cell on the displacement DoFHandler. */
     const DoFHandler<3>::active_cell_iterator &
     cell() const;
