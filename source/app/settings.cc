@@ -94,7 +94,7 @@ namespace softopt
     newton.parse_parameters(prm);
     shape_filter.parse_parameters(prm, *input);
     optimization.parse_parameters(prm, *input);
-    DirectSolver::parse_parameters(prm);
+    linear_solver = DirectSolver::parse_parameters(prm);
     functionals = Functionals::create(prm, *input);
   }
 } // namespace softopt

@@ -22,6 +22,7 @@ namespace softopt
                                                     *settings.material,
                                                     settings.loading.pressure_kPa * 1e-3);
     problem->setup_system();
+    problem->set_linear_solver(settings.linear_solver);
     settings.shape_filter.setup(*design, settings.geometry);
     psi = design->create_vector();
 
@@ -71,6 +72,28 @@ namespace softopt
 
   std::vector<double>
   DesignProblem::evaluate(const Vector &d)
+  {
+    // A refused design leaves the accepted one in place (its psi, and its
+    // states for the next warm start).
+    const Vector                   psi_accepted    = psi;
+    const std::map<double, Vector> states_accepted = states;
+    try
+      {
+        return evaluate_design(d);
+      }
+    catch (...)
+      {
+        psi    = psi_accepted;
+        states = states_accepted;
+        design->set_shape_field(psi);
+        throw;
+      }
+  }
+
+
+
+  std::vector<double>
+  DesignProblem::evaluate_design(const Vector &d)
   {
     // Eq. PDEpot02 for psi(d), starting from the last psi; then the mapping.
     {
@@ -130,10 +153,10 @@ namespace softopt
         // The adjoint of the condensed system shares the tangent at the
         // target state (symmetric, Eq. adj2). After a warm start the last
         // target's tangent is assembled (Newton's final residual check) and
-        // refined on the factorization of Newton's last step; other targets
-        // assemble and factorize.
-        const bool refine     = load_factor == tangent_at;
-        bool       factorized = refine;
+        // solved by GMRES on the factorization held (a nearby tangent);
+        // other targets assemble and factorize.
+        const bool assembled  = load_factor == tangent_at;
+        bool       factorized = assembled;
         for (unsigned int i = 0; i < functionals_.size(); ++i)
           {
             if (functionals_[i]->load_factor() != load_factor)
@@ -149,8 +172,8 @@ namespace softopt
             {
               TimerOutput::Scope scope(timer_output, "adjoint: solve");
               functionals_[i]->evaluate(*problem, *design, a, &dg_da, &dg_dX);
-              if (refine)
-                problem->solve_refined(dg_da, mu_a);
+              if (assembled)
+                problem->solve_kept(dg_da, mu_a);
               else
                 problem->solve(dg_da, mu_a);
             }

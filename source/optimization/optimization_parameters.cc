@@ -47,6 +47,15 @@ namespace softopt
                       "its adjoint solve from the last Newton factorization; "
                       "falls back to path following from zero when Newton "
                       "fails from there (see doc/theory.md).");
+    prm.declare_entry("Step halvings",
+                      "3",
+                      Patterns::Integer(0, 20),
+                      "When the physics or the filter refuses a design (an "
+                      "inverted element, a load path that does not reach a "
+                      "target), the MMA step from the last accepted design is "
+                      "halved and the design evaluated again, at most this "
+                      "many times before the run stops with the last accepted "
+                      "design (0: stop at once).");
     prm.declare_entry("Final analysis steps",
                       "20",
                       Patterns::Integer(1, 10000),
@@ -71,6 +80,7 @@ namespace softopt
     checkpoint_interval  = prm.get_integer("Checkpoint interval");
     final_analysis_steps = prm.get_integer("Final analysis steps");
     warm_start           = prm.get_bool("Warm start");
+    step_halvings        = prm.get_integer("Step halvings");
     prm.leave_subsection();
   }
 } // namespace softopt

@@ -56,7 +56,8 @@ namespace softopt
         if (k > first && opt.every(k, opt.mesh_update_interval))
           {
             problem.update_mesh(d); // X_o <- X_o + psi(d)
-            d = 0;
+            d        = 0;
+            accepted = d;
             reset_mma();
           }
         if (k > first && opt.every(k, opt.checkpoint_interval))
@@ -66,21 +67,33 @@ namespace softopt
 
         Timer               timer;
         std::vector<double> values;
-        try
-          {
-            values = problem.evaluate(d); // psi(d), X, path to every target
-          }
-        catch (const ExceptionBase &e)
-          {
-            std::ostringstream message;
-            e.print_info(message);
-            stopped_on_error = true;
-            return "the design of iteration " + std::to_string(k) +
-                   " was refused: " + Utilities::trim(message.str()) +
-                   " The last accepted design is that of iteration " +
-                   std::to_string(k - 1) + "; checkpoints are in " +
-                   Checkpoint::directory(out.path()) + ".";
-          }
+        for (unsigned int halving = 0;; ++halving)
+          try
+            {
+              values = problem.evaluate(d); // psi(d), X, path to every target
+              break;
+            }
+          catch (const ExceptionBase &e)
+            {
+              std::ostringstream message;
+              e.print_info(message);
+              const std::string reason = Utilities::trim(message.str());
+              if (k > first && halving < opt.step_halvings)
+                {
+                  // d <- (d_accepted + d) / 2: a shorter step in the same
+                  // direction, which MMA's next update starts from.
+                  d.sadd(0.5, 0.5, accepted);
+                  pcout << "  iteration " << k << ": design refused (" << reason
+                        << "); step halved" << std::endl;
+                  continue;
+                }
+              stopped_on_error = true;
+              return "the design of iteration " + std::to_string(k) +
+                     " was refused: " + reason +
+                     " The last accepted design is that of iteration " +
+                     std::to_string(k - 1) + "; checkpoints are in " +
+                     Checkpoint::directory(out.path()) + ".";
+            }
         const auto gradients = problem.gradients(); // adjoints, Eqs. sens01-06
         accepted             = d;
         if ((k == 0 && opt.output_interval > 0) || opt.every(k, opt.output_interval))

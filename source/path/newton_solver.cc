@@ -85,9 +85,8 @@ namespace softopt
                               norm,
                               std::abs(load_factor) * load.l2_norm()))
           return {iteration, norm};
-        problem.factorize();
         residual *= -1.;
-        problem.solve(residual, increment);
+        problem.solve_tangent(residual, increment);
         problem.update(a, increment);
       }
   }

@@ -438,15 +438,46 @@ namespace softopt
 
 
   void
-  HyperelasticProblem::solve_refined(const Vector &b, Vector &x)
+  HyperelasticProblem::solve_tangent(const Vector &b, Vector &x)
   {
-    Timer              timer;
-    const unsigned int before = direct_solver.n_factorizations();
-    const unsigned int solves = direct_solver.solve_refined(system_matrix, b, x);
-    statistics.n_factorizations += direct_solver.n_factorizations() - before;
-    statistics.n_solves += solves;
-    statistics.solve_time += timer.wall_time();
+    if (linear_solver.keep_factorization)
+      solve_krylov(b, x, linear_solver.tolerance, linear_solver.max_iterations);
+    else
+      EquilibriumProblem::solve_tangent(b, x);
+  }
+
+
+
+  void
+  HyperelasticProblem::solve_kept(const Vector &b, Vector &x)
+  {
+    solve_krylov(b, x, 1e-10, 50);
+  }
+
+
+
+  void
+  HyperelasticProblem::solve_krylov(const Vector      &b,
+                                    Vector            &x,
+                                    const double       tolerance,
+                                    const unsigned int max_iterations)
+  {
+    Timer      timer;
+    const auto result = direct_solver.solve_krylov(system_matrix, b, x, tolerance, max_iterations);
+    statistics.n_factorizations += result.factorized;
+    statistics.factorization_time += result.factorization_time;
+    statistics.n_krylov_iterations += result.iterations;
+    statistics.n_solves += result.iterations + result.factorized;
+    statistics.solve_time += timer.wall_time() - result.factorization_time;
     constraints.set_zero(x);
+  }
+
+
+
+  void
+  HyperelasticProblem::set_linear_solver(const DirectSolver::Parameters &parameters)
+  {
+    linear_solver = parameters;
   }
 
 
@@ -689,7 +720,8 @@ namespace softopt
     s << n_assemblies << " assemblies " << assembly_time << " s, "
       << n_factorizations << " factorizations " << factorization_time
       << " s, " << n_solves << " solves " << solve_time << " s, "
-      << n_residuals << " residuals " << residual_time << " s";
+      << n_residuals << " residuals " << residual_time << " s, "
+      << n_krylov_iterations << " GMRES iterations";
     return s.str();
   }
 

@@ -334,7 +334,7 @@ namespace softopt
     constraints.set_zero(b);
     // The tangent is at the solution; the kept factorization is of a
     // nearby one.
-    solver->solve_refined(matrix, b, mu);
+    solver->solve_krylov(matrix, b, mu, 1e-10, 50);
     constraints.set_zero(mu);
   }
 

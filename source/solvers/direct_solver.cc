@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/timer.h>
 
 #include <softopt/base/step_failure.h>
 #include <softopt/solvers/direct_solver.h>
@@ -33,16 +34,46 @@ namespace softopt
                       "The fill-reducing ordering of MUMPS' analysis "
                       "(ICNTL(7)); automatic lets MUMPS choose (PORD here). "
                       "doc/benchmarks.md compares them on the actuator.");
+    prm.declare_entry(
+      "Newton steps",
+      "factorize",
+      Patterns::Selection("factorize|kept factorization"),
+      "How a Newton step of the physics solves with its tangent. factorize: "
+      "a MUMPS factorization of every tangent. kept factorization: GMRES "
+      "preconditioned with the last factorization (of an earlier step, load "
+      "step or design), which is replaced only when GMRES needs more than "
+      "'GMRES iterations'; it pays where a factorization costs many solves, "
+      "on large meshes (doc/benchmarks.md says where each wins). Arclength "
+      "steps always factorize (they need the sign of det K); adjoint solves "
+      "always use GMRES on the kept factorization.");
+    prm.declare_entry("GMRES tolerance",
+                      "1e-6",
+                      Patterns::Double(1e-14, 1e-1),
+                      "With kept factorization: the relative residual "
+                      "|b - K x| / |b| of a Newton step's linear solve "
+                      "(an inexact Newton step; well below Newton's own "
+                      "reduction per step, so Newton converges as with a "
+                      "factorization).");
+    prm.declare_entry("GMRES iterations",
+                      "20",
+                      Patterns::Integer(1, 500),
+                      "With kept factorization: GMRES iterations after which "
+                      "the kept factorization counts as too far from the "
+                      "tangent and the tangent is factorized.");
     prm.leave_subsection();
   }
 
 
 
-  void
+  DirectSolver::Parameters
   DirectSolver::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
     const std::string ordering = prm.get("MUMPS ordering");
+    Parameters        parameters;
+    parameters.keep_factorization = prm.get("Newton steps") == "kept factorization";
+    parameters.tolerance          = prm.get_double("GMRES tolerance");
+    parameters.max_iterations     = prm.get_integer("GMRES iterations");
     prm.leave_subsection();
     const char *icntl7 = ordering == "METIS" ? "5" :
                          ordering == "PORD"  ? "4" :
@@ -50,6 +81,7 @@ namespace softopt
                                                "7";
     check(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_7", icntl7),
           "PetscOptionsSetValue");
+    return parameters;
   }
 
 
@@ -62,6 +94,8 @@ namespace softopt
 
   DirectSolver::~DirectSolver()
   {
+    if (krylov != nullptr)
+      KSPDestroy(&krylov);
     if (ksp != nullptr)
       KSPDestroy(&ksp);
   }
@@ -142,29 +176,89 @@ namespace softopt
 
 
 
-  unsigned int
-  DirectSolver::solve_refined(const PETScWrappers::MPI::SparseMatrix &matrix,
-                              const PETScWrappers::MPI::Vector       &b,
-                              PETScWrappers::MPI::Vector             &x,
-                              const double                            tolerance)
+  namespace
   {
-    if (!has_factorization())
-      factorize(matrix);
-    PETScWrappers::MPI::Vector r = b, dx = b;
+    // The preconditioner of the GMRES in solve_krylov: one solve with the
+    // kept factorization (the preonly KSP in the shell's context).
+    PetscErrorCode
+    apply_factorization(PC pc, Vec x, Vec y)
+    {
+      void *context = nullptr;
+      PetscErrorCode code = PCShellGetContext(pc, &context);
+      if (code != 0)
+        return code;
+      return KSPSolve(static_cast<KSP>(context), x, y);
+    }
+  } // namespace
+
+
+
+  DirectSolver::KrylovResult
+  DirectSolver::solve_krylov(const PETScWrappers::MPI::SparseMatrix &matrix,
+                             const PETScWrappers::MPI::Vector       &b,
+                             PETScWrappers::MPI::Vector             &x,
+                             const double                            tolerance,
+                             const unsigned int                      max_iterations)
+  {
     x.reinit(b);
-    const double goal = tolerance * b.l2_norm();
-    for (unsigned int step = 1; step <= 10; ++step)
+    const auto factorize_and_solve = [&](const unsigned int iterations) {
+      Timer timer;
+      factorize(matrix);
+      const double time = timer.wall_time();
+      solve(b, x);
+      return KrylovResult{iterations, true, time};
+    };
+    if (!has_factorization())
+      return factorize_and_solve(0);
+    if (krylov == nullptr)
       {
-        solve(r, dx);
-        x += dx;
-        matrix.vmult(r, x);
-        r.sadd(-1., b); // r = b - K x
-        if (r.l2_norm() <= goal)
-          return step;
+        check(KSPCreate(comm, &krylov), "KSPCreate");
+        check(KSPSetType(krylov, KSPGMRES), "KSPSetType");
+        // Right preconditioning: GMRES minimizes the true residual b - K x.
+        check(KSPSetPCSide(krylov, PC_RIGHT), "KSPSetPCSide");
+        check(KSPGMRESSetOrthogonalization(
+                krylov, KSPGMRESModifiedGramSchmidtOrthogonalization),
+              "KSPGMRESSetOrthogonalization");
+        PC pc;
+        check(KSPGetPC(krylov, &pc), "KSPGetPC");
+        check(PCSetType(pc, PCSHELL), "PCSetType");
+        check(PCShellSetApply(pc, apply_factorization), "PCShellSetApply");
       }
-    factorize(matrix);
-    solve(b, x);
-    return 11;
+    PC pc;
+    check(KSPGetPC(krylov, &pc), "KSPGetPC");
+    check(PCShellSetContext(pc, ksp), "PCShellSetContext");
+    const Mat A = static_cast<Mat>(matrix);
+    check(KSPSetOperators(krylov, A, A), "KSPSetOperators");
+    // GMRES's residual is a recurrence that drifts from the true b - K x on
+    // ill-conditioned tangents (nu near 0.5); a converged solve is checked
+    // and, if need be, continued from its result, which recomputes the
+    // residual. No restarts within a cycle: GMRES either converges within
+    // max_iterations in all or the factorization is replaced.
+    const double               goal       = tolerance * b.l2_norm();
+    unsigned int               iterations = 0;
+    PETScWrappers::MPI::Vector residual(b);
+    check(KSPSetInitialGuessNonzero(krylov, PETSC_FALSE), "KSPSetInitialGuessNonzero");
+    for (unsigned int cycle = 0; cycle < 3 && iterations < max_iterations; ++cycle)
+      {
+        const unsigned int remaining = max_iterations - iterations;
+        check(KSPGMRESSetRestart(krylov, remaining), "KSPGMRESSetRestart");
+        check(KSPSetTolerances(krylov, 0., goal, PETSC_DEFAULT, remaining),
+              "KSPSetTolerances");
+        check(KSPSolve(krylov, b, x), "KSPSolve");
+        KSPConvergedReason reason;
+        PetscInt           cycle_iterations = 0;
+        check(KSPGetConvergedReason(krylov, &reason), "KSPGetConvergedReason");
+        check(KSPGetIterationNumber(krylov, &cycle_iterations), "KSPGetIterationNumber");
+        iterations += cycle_iterations;
+        if (reason <= 0)
+          break;
+        matrix.vmult(residual, x);
+        residual.sadd(-1., b);
+        if (residual.l2_norm() <= goal)
+          return {iterations, false, 0.};
+        check(KSPSetInitialGuessNonzero(krylov, PETSC_TRUE), "KSPSetInitialGuessNonzero");
+      }
+    return factorize_and_solve(iterations);
   }
 
 

@@ -11,6 +11,7 @@
 #include <softopt/optimization/optimization_parameters.h>
 #include <softopt/physics/material.h>
 #include <softopt/shape/shape_filter.h>
+#include <softopt/solvers/direct_solver.h>
 
 #include <memory>
 #include <string>
@@ -58,6 +59,8 @@ namespace softopt
     std::shared_ptr<const Material> material;
     PathFollowing      loading;
     NewtonSolver       newton;
+    /** subsection Linear solver */
+    DirectSolver::Parameters linear_solver;
     ShapeFilter        shape_filter;
     OptimizationParameters optimization;
 

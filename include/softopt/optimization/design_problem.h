@@ -57,7 +57,8 @@ namespace softopt
      * every target load factor (the union of "Target load factors" and the
      * functionals' load factors) and evaluates the functionals. Throws a
      * message if the filter refuses the shape or the path cannot reach a
-     * target.
+     * target; the accepted design (psi and the states at the targets) then
+     * stays in place.
      */
     std::vector<double>
     evaluate(const Vector &d);
@@ -125,6 +126,10 @@ namespace softopt
     target_states() const;
 
   private:
+    /** evaluate() without the restore on failure. */
+    std::vector<double>
+    evaluate_design(const Vector &d);
+
     /** Newton at each target from the previous design's state there;
      * false (and the states are void) if Newton fails for one of them. */
     bool

@@ -28,6 +28,8 @@ namespace softopt
     unsigned int checkpoint_interval  = 10;
     unsigned int final_analysis_steps = 20;
     bool         warm_start           = true;
+    /** Halvings of a refused MMA step before the run stops. */
+    unsigned int step_halvings = 3;
 
     /** Whether iteration @p k > 0 is one of every @p interval (0: none). */
     static bool

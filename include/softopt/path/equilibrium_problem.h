@@ -41,6 +41,17 @@ namespace softopt
     virtual void
     factorize() = 0;
 
+    /** x = K^{-1} b for the tangent of the last assemble(), as the problem
+     * chooses (by default a fresh factorization; a problem may instead
+     * iterate on a kept one, to a relative residual well below Newton's
+     * reduction per step). For Newton steps. */
+    virtual void
+    solve_tangent(const Vector &b, Vector &x)
+    {
+      factorize();
+      solve(b, x);
+    }
+
     /** x = K^{-1} b with the last factorization (constrained entries zero).
      * For a condensed system, K, b and x hold only the retained unknowns. */
     virtual void

@@ -56,11 +56,13 @@ namespace softopt
 
     /**
      * Solves r_a(a, lambda) = 0 starting from @p a by Newton's method, each
-     * step on a fresh factorization. On return the tangent at the converged
-     * state is assembled (not yet factorized) and the factorization held is
-     * that of the last step, a nearby tangent. Throws StepFailure when the
-     * iteration does not converge. (Modified Newton on kept factorizations
-     * was measured for warm starts and dropped: doc/benchmarks.md.)
+     * step solving with its own tangent (EquilibriumProblem::solve_tangent:
+     * a fresh factorization, or GMRES on a kept one). On return the tangent
+     * at the converged state is assembled and the factorization held is of
+     * a nearby tangent. Throws StepFailure when the iteration does not
+     * converge. (Modified Newton, steps with a kept factorization and no
+     * Krylov method, was measured for warm starts and dropped:
+     * doc/benchmarks.md.)
      */
     Result
     solve(EquilibriumProblem         &problem,

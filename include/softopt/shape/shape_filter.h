@@ -71,7 +71,7 @@ namespace softopt
     solve(const Vector &d, Vector &psi);
 
     /** Solves (dr_psi/dpsi)^T mu = @p rhs at the last solution (the tangent
-     * is symmetric), by refinement on the kept factorization. */
+     * is symmetric), by GMRES on the kept factorization. */
     void
     solve_adjoint(const Vector &rhs, Vector &mu);
 

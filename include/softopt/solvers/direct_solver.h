@@ -18,19 +18,37 @@ namespace softopt
    * on the first factorization and reused for every later one, because the
    * sparsity pattern of a matrix object never changes.
    *
+   * Nearby matrices are solved by GMRES preconditioned with a kept
+   * factorization (solve_krylov), the iterative alternative of subsection
+   * "Linear solver".
+   *
    * Every factorization is checked (MUMPS' INFOG(1)); a failure throws
    * StepFailure with MUMPS' error code instead of returning NaNs.
    */
   class DirectSolver
   {
   public:
-    /** subsection "Linear solver": the fill-reducing ordering of MUMPS. */
+    /** subsection "Linear solver": the fill-reducing ordering of MUMPS and
+     * how Newton steps solve with their tangent. */
     static void
     declare_parameters(ParameterHandler &prm);
 
-    /** Sets the ordering for every factorization of the run (through
-     * PETSc's options database, which MUMPS reads at its analysis). */
-    static void
+    /** How the Newton steps of the physics solve with their tangent. */
+    struct Parameters
+    {
+      /** false: each step factorizes its tangent; true: GMRES on the kept
+       * factorization (solve_krylov). */
+      bool keep_factorization = false;
+      /** GMRES's relative residual for a Newton step. */
+      double tolerance = 1e-6;
+      /** GMRES iterations before the kept factorization is replaced. */
+      unsigned int max_iterations = 20;
+    };
+
+    /** Reads the subsection; sets the ordering for every factorization of
+     * the run (through PETSc's options database, which MUMPS reads at its
+     * analysis). */
+    static Parameters
     parse_parameters(ParameterHandler &prm);
 
     explicit DirectSolver(const MPI_Comm comm);
@@ -49,19 +67,33 @@ namespace softopt
     solve(const PETScWrappers::MPI::Vector &b,
           PETScWrappers::MPI::Vector       &x) const;
 
+    /** What solve_krylov() did. */
+    struct KrylovResult
+    {
+      /** GMRES iterations (solves with the factorization). */
+      unsigned int iterations = 0;
+      /** Whether it factorized @p matrix (no factorization held, or GMRES
+       * did not reach the tolerance). */
+      bool factorized = false;
+      /** Wall time of that factorization, s. */
+      double factorization_time = 0;
+    };
+
     /**
      * x = K^{-1} b for a @p matrix whose values changed since the last
      * factorization (a nearby tangent: the last Newton step's, the previous
-     * design's), by iterative refinement x <- x + F^{-1}(b - K x) to a
-     * relative residual of @p tolerance; factorizes @p matrix if there is
-     * no factorization or ten refinements do not get there. Returns the
-     * number of solves with the factorization.
+     * design's) by GMRES preconditioned with the factorization held, to
+     * |b - K x| <= @p tolerance |b|. If there is no factorization, or GMRES
+     * has not converged after @p max_iterations, factorizes @p matrix and
+     * solves with it: a kept factorization serves until the tangents have
+     * moved too far from it, and is then replaced.
      */
-    unsigned int
-    solve_refined(const PETScWrappers::MPI::SparseMatrix &matrix,
-                  const PETScWrappers::MPI::Vector       &b,
-                  PETScWrappers::MPI::Vector             &x,
-                  const double                            tolerance = 1e-12);
+    KrylovResult
+    solve_krylov(const PETScWrappers::MPI::SparseMatrix &matrix,
+                 const PETScWrappers::MPI::Vector       &b,
+                 PETScWrappers::MPI::Vector             &x,
+                 const double                            tolerance,
+                 const unsigned int                      max_iterations);
 
     /** Whether a factorization is held. */
     bool
@@ -80,6 +112,8 @@ namespace softopt
     KSP          ksp = nullptr;
     Mat          analyzed_matrix = nullptr;
     unsigned int factorizations = 0;
+    /** GMRES on the current matrix, preconditioned by ksp (a PCSHELL). */
+    KSP krylov = nullptr;
   };
 } // namespace softopt
 
