@@ -168,6 +168,7 @@ namespace softopt
                                 *settings.material,
                                 settings.loading.pressure_kPa * 1e-3);
     problem.setup_system();
+    problem.set_linear_solver(settings.linear_solver);
     pcout << "Mesh: " << triangulation.n_global_active_cells()
           << " tetrahedra, " << problem.get_dof_handler().n_dofs()
           << " degrees of freedom" << std::endl;

@@ -72,9 +72,8 @@ namespace softopt
     pcout << "Stopped: " << reason << std::endl;
     out.write_text("stop_reason.txt", reason + "\n");
 
-    // The final design: the last one the physics accepted.
-    if (optimizer.failed())
-      problem.evaluate(optimizer.design());
+    // The final design: the last one the physics accepted (a refused
+    // design leaves it in place, DesignProblem::evaluate).
     const unsigned int n_triangles =
       write_design_stl(problem.design_configuration(), out.file("design.stl"));
     pcout << "Wrote " << out.file("design.stl") << " (" << n_triangles

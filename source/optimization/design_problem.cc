@@ -86,6 +86,7 @@ namespace softopt
         psi    = psi_accepted;
         states = states_accepted;
         design->set_shape_field(psi);
+        settings.shape_filter.forget_factorization();
         throw;
       }
   }

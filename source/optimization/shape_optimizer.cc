@@ -53,12 +53,28 @@ namespace softopt
 
     for (; k < opt.maximum_iterations; ++k)
       {
+        // The mesh update moves the mesh to the design d, not yet evaluated;
+        // if that design is refused the update is undone (below) and the
+        // step halved on the old mesh like any other.
+        std::unique_ptr<MeshBeforeUpdate> before_update;
         if (k > first && opt.every(k, opt.mesh_update_interval))
           {
-            problem.update_mesh(d); // X_o <- X_o + psi(d)
-            d        = 0;
-            accepted = d;
-            reset_mma();
+            before_update = std::make_unique<MeshBeforeUpdate>(
+              MeshBeforeUpdate{problem.design_configuration().initial_coordinates(),
+                               problem.shape_field(),
+                               d,
+                               accepted});
+            try
+              {
+                problem.update_mesh(d); // X_o <- X_o + psi(d)
+                d        = 0;
+                accepted = d;
+                reset_mma();
+              }
+            catch (const std::exception &)
+              {
+                undo_mesh_update(before_update); // evaluate(d) refuses it below
+              }
           }
         if (k > first && opt.every(k, opt.checkpoint_interval))
           Checkpoint::save(out.path(), k, d,
@@ -73,11 +89,16 @@ namespace softopt
               values = problem.evaluate(d); // psi(d), X, path to every target
               break;
             }
-          catch (const ExceptionBase &e)
+          catch (const std::exception &e)
             {
               std::ostringstream message;
-              e.print_info(message);
+              if (const auto *deal = dynamic_cast<const ExceptionBase *>(&e))
+                deal->print_info(message);
+              else
+                message << e.what();
               const std::string reason = Utilities::trim(message.str());
+              undo_mesh_update(before_update);
+              // Nothing to halve at the first iteration of a run or restart.
               if (k > first && halving < opt.step_halvings)
                 {
                   // d <- (d_accepted + d) / 2: a shorter step in the same
@@ -112,18 +133,23 @@ namespace softopt
 
 
 
-  const ShapeOptimizer::Vector &
-  ShapeOptimizer::design() const
-  {
-    return accepted;
-  }
-
-
-
   bool
   ShapeOptimizer::failed() const
   {
     return stopped_on_error;
+  }
+
+
+
+  void
+  ShapeOptimizer::undo_mesh_update(std::unique_ptr<MeshBeforeUpdate> &before)
+  {
+    if (!before)
+      return;
+    problem.restore(before->initial_coordinates, before->shape_field);
+    d        = before->d;
+    accepted = before->accepted;
+    before.reset();
   }
 
 

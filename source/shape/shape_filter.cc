@@ -323,6 +323,14 @@ namespace softopt
 
 
   void
+  ShapeFilter::forget_factorization()
+  {
+    solver = std::make_unique<DirectSolver>(matrix.get_mpi_communicator());
+  }
+
+
+
+  void
   ShapeFilter::solve_adjoint(const Vector &rhs, Vector &mu)
   {
     if (solution)

@@ -114,6 +114,8 @@ namespace softopt
       {
         if (ksp != nullptr)
           KSPDestroy(&ksp);
+        if (krylov != nullptr) // its operators had the old matrix's sizes
+          KSPDestroy(&krylov);
         check(KSPCreate(comm, &ksp), "KSPCreate");
         check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
         PC pc;

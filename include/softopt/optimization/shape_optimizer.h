@@ -39,15 +39,23 @@ namespace softopt
     std::string
     run(const bool restart);
 
-    /** The last design the physics accepted (the last row of history). */
-    const Vector &
-    design() const;
-
     /** Whether the last run() stopped on a refused design. */
     bool
     failed() const;
 
   private:
+    /** What a mesh update changes, to undo it when the design it moved
+     * the mesh to is refused. */
+    struct MeshBeforeUpdate
+    {
+      Vector initial_coordinates, shape_field, d, accepted;
+    };
+
+    /** Moves the mesh back (if @p before is set) and clears @p before; MMA
+     * keeps its fresh start. */
+    void
+    undo_mesh_update(std::unique_ptr<MeshBeforeUpdate> &before);
+
     /** A fresh MMA on the current design variables (start, mesh update). */
     void
     reset_mma();

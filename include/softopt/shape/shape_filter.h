@@ -70,6 +70,11 @@ namespace softopt
     Result
     solve(const Vector &d, Vector &psi);
 
+    /** Drops the kept factorization (it may be of a refused shape, or
+     * failed); the next solve factorizes anew. */
+    void
+    forget_factorization();
+
     /** Solves (dr_psi/dpsi)^T mu = @p rhs at the last solution (the tangent
      * is symmetric), by GMRES on the kept factorization. */
     void
