@@ -53,68 +53,22 @@ namespace softopt
 
     for (; k < opt.maximum_iterations; ++k)
       {
-        // The mesh update moves the mesh to the design d, not yet evaluated;
-        // if that design is refused the update is undone (below) and the
-        // step halved on the old mesh like any other.
-        std::unique_ptr<MeshBeforeUpdate> before_update;
-        if (k > first && opt.every(k, opt.mesh_update_interval))
-          {
-            before_update = std::make_unique<MeshBeforeUpdate>(
-              MeshBeforeUpdate{problem.design_configuration().initial_coordinates(),
-                               problem.shape_field(),
-                               d,
-                               accepted});
-            try
-              {
-                problem.update_mesh(d); // X_o <- X_o + psi(d)
-                d        = 0;
-                accepted = d;
-                reset_mma();
-              }
-            catch (const std::exception &)
-              {
-                undo_mesh_update(before_update); // evaluate(d) refuses it below
-              }
-          }
+        auto before_update = k > first && opt.every(k, opt.mesh_update_interval) ?
+                               update_mesh() : // X_o <- X_o + psi(d), d <- 0
+                               nullptr;
         if (k > first && opt.every(k, opt.checkpoint_interval))
           Checkpoint::save(out.path(), k, d,
                            problem.design_configuration().initial_coordinates(),
                            problem.shape_field(), *mma, problem.target_states());
 
         Timer               timer;
-        std::vector<double> values;
-        for (unsigned int halving = 0;; ++halving)
-          try
-            {
-              values = problem.evaluate(d); // psi(d), X, path to every target
-              break;
-            }
-          catch (const std::exception &e)
-            {
-              std::ostringstream message;
-              if (const auto *deal = dynamic_cast<const ExceptionBase *>(&e))
-                deal->print_info(message);
-              else
-                message << e.what();
-              const std::string reason = Utilities::trim(message.str());
-              undo_mesh_update(before_update);
-              // Nothing to halve at the first iteration of a run or restart.
-              if (k > first && halving < opt.step_halvings)
-                {
-                  // d <- (d_accepted + d) / 2: a shorter step in the same
-                  // direction, which MMA's next update starts from.
-                  d.sadd(0.5, 0.5, accepted);
-                  pcout << "  iteration " << k << ": design refused (" << reason
-                        << "); step halved" << std::endl;
-                  continue;
-                }
-              stopped_on_error = true;
-              return "the design of iteration " + std::to_string(k) +
-                     " was refused: " + reason +
-                     " The last accepted design is that of iteration " +
-                     std::to_string(k - 1) + "; checkpoints are in " +
-                     Checkpoint::directory(out.path()) + ".";
-            }
+        std::vector<double> values; // psi(d), X, path to every target
+        const std::string   refused = evaluate_or_halve(k, k > first, before_update, values);
+        if (!refused.empty())
+          {
+            stopped_on_error = true;
+            return refused;
+          }
         const auto gradients = problem.gradients(); // adjoints, Eqs. sens01-06
         accepted             = d;
         if ((k == 0 && opt.output_interval > 0) || opt.every(k, opt.output_interval))
@@ -137,6 +91,69 @@ namespace softopt
   ShapeOptimizer::failed() const
   {
     return stopped_on_error;
+  }
+
+
+
+  std::unique_ptr<ShapeOptimizer::MeshBeforeUpdate>
+  ShapeOptimizer::update_mesh()
+  {
+    // The mesh moves to the design d, not yet evaluated; if that design is
+    // refused the update is undone and the step halved on the old mesh.
+    auto before = std::make_unique<MeshBeforeUpdate>(
+      MeshBeforeUpdate{problem.design_configuration().initial_coordinates(),
+                       problem.shape_field(),
+                       d,
+                       accepted});
+    try
+      {
+        problem.update_mesh(d);
+        d        = 0;
+        accepted = d;
+        reset_mma();
+      }
+    catch (const std::exception &)
+      {
+        undo_mesh_update(before); // evaluate() refuses d
+      }
+    return before;
+  }
+
+
+
+  std::string
+  ShapeOptimizer::evaluate_or_halve(const unsigned int                 k,
+                                    const bool                         may_halve,
+                                    std::unique_ptr<MeshBeforeUpdate> &before_update,
+                                    std::vector<double>               &values)
+  {
+    for (unsigned int halving = 0;; ++halving)
+      try
+        {
+          values = problem.evaluate(d);
+          return "";
+        }
+      catch (const std::exception &e)
+        {
+          std::ostringstream message;
+          if (const auto *deal = dynamic_cast<const ExceptionBase *>(&e))
+            deal->print_info(message);
+          else
+            message << e.what();
+          const std::string reason = Utilities::trim(message.str());
+          undo_mesh_update(before_update);
+          if (!may_halve || halving == settings.optimization.step_halvings)
+            return "the design of iteration " + std::to_string(k) +
+                   " was refused: " + reason +
+                   " The last accepted design is that of iteration " +
+                   std::to_string(k - 1) + "; checkpoints are in " +
+                   Checkpoint::directory(out.path()) + ".";
+          // d <- (d_accepted + d) / 2: a shorter step in the same direction,
+          // which MMA's next update starts from.
+          d.sadd(0.5, 0.5, accepted);
+          pcout << "  iteration " << k << ": design refused (" << reason
+                << "); step halved" << std::endl;
+        }
   }
 
 

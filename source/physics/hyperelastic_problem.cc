@@ -451,7 +451,7 @@ namespace softopt
   void
   HyperelasticProblem::solve_kept(const Vector &b, Vector &x)
   {
-    solve_krylov(b, x, 1e-10, 50);
+    solve_krylov(b, x, DirectSolver::adjoint_tolerance, DirectSolver::adjoint_iterations);
   }
 
 

@@ -270,7 +270,7 @@ namespace softopt
     // Modified Newton on the factorization kept from the last solve (the
     // previous design's tangent); steps that keep it assemble only the
     // residual.
-    RefactorizationRule rule(true, solver->has_factorization());
+    RefactorizationRule rule(solver->has_factorization());
     bool tangent_at_solution = false;
     for (unsigned int it = 0;; ++it)
       {
@@ -342,7 +342,7 @@ namespace softopt
     constraints.set_zero(b);
     // The tangent is at the solution; the kept factorization is of a
     // nearby one.
-    solver->solve_krylov(matrix, b, mu, 1e-10, 50);
+    solver->solve_krylov(matrix, b, mu);
     constraints.set_zero(mu);
   }
 

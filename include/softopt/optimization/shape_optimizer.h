@@ -51,6 +51,21 @@ namespace softopt
       Vector initial_coordinates, shape_field, d, accepted;
     };
 
+    /** X_o <- X_o + psi(d), d <- 0 and a fresh MMA; returns what it
+     * changed (undone already if the filter refused psi(d)). */
+    std::unique_ptr<MeshBeforeUpdate>
+    update_mesh();
+
+    /** The functional values at d into @p values; a refused d is halved
+     * towards the accepted design (if @p may_halve, at most Step halvings
+     * times; a mesh update to it is undone first). Returns why the run
+     * stops, or "" once d is accepted. */
+    std::string
+    evaluate_or_halve(const unsigned int                 k,
+                      const bool                         may_halve,
+                      std::unique_ptr<MeshBeforeUpdate> &before_update,
+                      std::vector<double>               &values);
+
     /** Moves the mesh back (if @p before is set) and clears @p before; MMA
      * keeps its fresh start. */
     void

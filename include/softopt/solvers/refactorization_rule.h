@@ -9,16 +9,14 @@ namespace softopt
    * When a modified Newton iteration factorizes its tangent anew: a kept
    * factorization (of the previous design's tangent, or of an earlier
    * step) serves while it reduces the residual by at least a factor 4 per
-   * step. Without reuse every step factorizes (plain Newton). Used by the
-   * shape filter; the physics' warm starts measured better with plain
-   * Newton (doc/benchmarks.md).
+   * step. Used by the shape filter; the physics' warm starts measured
+   * better with Newton steps on their own tangent (doc/benchmarks.md).
    */
   class RefactorizationRule
   {
   public:
-    RefactorizationRule(const bool reuse, const bool have_factorization)
-      : reuse(reuse)
-      , have_factorization(have_factorization)
+    explicit RefactorizationRule(const bool have_factorization)
+      : have_factorization(have_factorization)
     {}
 
     /** Whether the next step factorizes whatever its residual: then its
@@ -27,7 +25,7 @@ namespace softopt
     bool
     certain() const
     {
-      return !reuse || !have_factorization;
+      return !have_factorization;
     }
 
     /** Call once per step with its residual norm, before the solve. */
@@ -35,14 +33,13 @@ namespace softopt
     refactorize(const double residual_norm)
     {
       const bool result =
-        !reuse || !have_factorization || residual_norm > 0.25 * previous_norm;
+        !have_factorization || residual_norm > 0.25 * previous_norm;
       have_factorization = true;
       previous_norm      = residual_norm;
       return result;
     }
 
   private:
-    const bool reuse;
     bool       have_factorization;
     double     previous_norm = std::numeric_limits<double>::infinity();
   };
