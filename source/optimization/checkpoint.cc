@@ -3,6 +3,7 @@
 
 #include <softopt/optimization/checkpoint.h>
 
+#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -14,7 +15,9 @@ namespace softopt
   {
     namespace
     {
-      constexpr std::uint64_t magic = 0x736f66746f707431; // "softopt1"
+      constexpr std::uint64_t magic = 0x736f66746f707432; // "softopt2"
+      // Before the warm start's secant was part of it (read without).
+      constexpr std::uint64_t magic_1 = 0x736f66746f707431; // "softopt1"
 
       std::string
       rank_file(const std::string &dir, const MPI_Comm comm)
@@ -67,6 +70,32 @@ namespace softopt
         v.set(indices, values);
         v.compress(VectorOperation::insert);
       }
+
+      void
+      write_states(std::ostream &out, const std::map<double, Vector> &states)
+      {
+        write_value<std::uint32_t>(out, states.size());
+        for (const auto &[load_factor, a] : states)
+          {
+            write_value(out, load_factor);
+            write_vector(out, a);
+          }
+      }
+
+      std::map<double, Vector>
+      read_states(std::istream &in, const Vector &state_template, const std::string &file)
+      {
+        std::map<double, Vector> states;
+        const auto n_states = read_value<std::uint32_t>(in);
+        for (unsigned int i = 0; i < n_states && in; ++i)
+          {
+            const auto load_factor = read_value<double>(in);
+            Vector     a           = state_template;
+            read_vector(in, a, file);
+            states.emplace(load_factor, a);
+          }
+        return states;
+      }
     } // namespace
 
 
@@ -86,7 +115,8 @@ namespace softopt
          const Vector      &X_o,
          const Vector      &psi,
          const MMA         &mma,
-         const std::map<double, Vector> &states)
+         const std::map<double, Vector> &states,
+         const SecantPredictor          &secant)
     {
       namespace fs     = std::filesystem;
       const auto  comm = d.get_mpi_communicator();
@@ -109,11 +139,17 @@ namespace softopt
         write_vector(out, X_o);
         write_vector(out, psi);
         mma.save(out);
-        write_value<std::uint32_t>(out, states.size());
-        for (const auto &[load_factor, a] : states)
+        write_states(out, states);
+        // The secant: the positions of the design of these states, and the
+        // design before it.
+        for (const auto *design : {&secant.last_design(), &secant.previous_design()})
           {
-            write_value(out, load_factor);
-            write_vector(out, a);
+            write_value<std::uint8_t>(out, !design->states.empty());
+            if (!design->states.empty())
+              {
+                write_vector(out, design->X);
+                write_states(out, design->states);
+              }
           }
         AssertThrow(out, ExcMessage("Writing the checkpoint " + file + " failed."));
       }
@@ -139,7 +175,8 @@ namespace softopt
          Vector            &psi,
          MMA               &mma,
          const Vector      &state_template,
-         std::map<double, Vector> &states)
+         std::map<double, Vector> &states,
+         SecantPredictor          &secant)
     {
       const auto comm = d.get_mpi_communicator();
       // A run killed between the two renames of save() left ".old".
@@ -154,7 +191,8 @@ namespace softopt
                              " (checkpoints are written every \"Checkpoint "
                              "interval\" iterations of subsection Optimization "
                              "into the output directory)."));
-      AssertThrow(read_value<std::uint64_t>(in) == magic,
+      const auto file_magic = read_value<std::uint64_t>(in);
+      AssertThrow(file_magic == magic || file_magic == magic_1,
                   ExcMessage(file + " is not a softopt checkpoint."));
       const auto n_ranks = read_value<std::uint32_t>(in);
       AssertThrow(n_ranks == Utilities::MPI::n_mpi_processes(comm),
@@ -167,15 +205,17 @@ namespace softopt
       read_vector(in, X_o, file);
       read_vector(in, psi, file);
       mma.load(in);
-      states.clear();
-      const auto n_states = read_value<std::uint32_t>(in);
-      for (unsigned int i = 0; i < n_states && in; ++i)
-        {
-          const auto load_factor = read_value<double>(in);
-          Vector     a           = state_template;
-          read_vector(in, a, file);
-          states.emplace(load_factor, a);
-        }
+      states = read_states(in, state_template, file);
+      std::array<SecantPredictor::Design, 2> designs; // last, previous
+      if (file_magic == magic) // older checkpoints have no secant
+        for (auto &design : designs)
+          if (read_value<std::uint8_t>(in) && in)
+            {
+              design.X = X_o;
+              read_vector(in, design.X, file);
+              design.states = read_states(in, state_template, file);
+            }
+      secant.restore(designs[1], designs[0]);
       AssertThrow(in, ExcMessage("The checkpoint " + file + " is truncated."));
       return iteration;
     }

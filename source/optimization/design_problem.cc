@@ -79,7 +79,10 @@ namespace softopt
     const std::map<double, Vector> states_accepted = states;
     try
       {
-        return evaluate_design(d);
+        const std::vector<double> values = evaluate_design(d);
+        if (settings.optimization.warm_start && settings.optimization.secant_predictor)
+          predictor.accept(nodal_positions(), states);
+        return values;
       }
     catch (...)
       {
@@ -262,29 +265,72 @@ namespace softopt
   {
     if (states.size() != targets.size())
       return false;
+    if (settings.optimization.secant_predictor)
+      {
+        std::map<double, Vector> start = predictor.predict(nodal_positions(), states);
+        if (predictor.last_alpha() != 0)
+          {
+            if (newton_at_targets(std::move(start), report.secant_failure))
+              {
+                report.secant_alpha = predictor.last_alpha();
+                return true;
+              }
+          }
+      }
+    if (newton_at_targets(states, report.warm_start_failure))
+      return true;
+    states.clear();
+    return false;
+  }
+
+
+
+  bool
+  DesignProblem::newton_at_targets(std::map<double, Vector> start,
+                                   std::string             &failure)
+  {
     try
       {
-        for (auto &[load_factor, a] : states) // ascending
+        for (auto &[load_factor, a] : start) // ascending
           report.newton_iterations +=
             settings.newton.solve(*problem, a, load_factor).iterations;
+        states = std::move(start);
         return true;
       }
-    catch (const StepFailure &failure)
+    catch (const StepFailure &step_failure)
       {
-        report.warm_start_failure = failure.what();
-        states.clear();
-        report.newton_iterations = 0;
+        failure = step_failure.what();
         return false;
       }
   }
 
 
 
+  DesignProblem::Vector
+  DesignProblem::nodal_positions() const
+  {
+    Vector X = design->initial_coordinates();
+    X += psi;
+    return X;
+  }
+
+
+
   void
-  DesignProblem::set_target_states(const std::map<double, Vector> &new_states)
+  DesignProblem::set_target_states(const std::map<double, Vector> &new_states,
+                                   const SecantPredictor          &secant)
   {
     states     = new_states;
     tangent_at = -1;
+    predictor  = secant;
+  }
+
+
+
+  const SecantPredictor &
+  DesignProblem::secant_predictor() const
+  {
+    return predictor;
   }
 
 

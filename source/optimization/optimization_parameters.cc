@@ -47,6 +47,15 @@ namespace softopt
                       "its adjoint solve from the last Newton factorization; "
                       "falls back to path following from zero when Newton "
                       "fails from there (see doc/theory.md).");
+    prm.declare_entry("Warm start predictor",
+                      "secant",
+                      Patterns::Selection("secant|none"),
+                      "Where a warm start's Newton begins: \"secant\" "
+                      "extrapolates the target states along the secant "
+                      "through the last two accepted designs (one Newton "
+                      "step fewer, doc/theory.md), falling back to the last "
+                      "design's states if Newton fails from there; \"none\" "
+                      "starts from the last design's states.");
     prm.declare_entry("Step halvings",
                       "3",
                       Patterns::Integer(0, 20),
@@ -80,6 +89,7 @@ namespace softopt
     checkpoint_interval  = prm.get_integer("Checkpoint interval");
     final_analysis_steps = prm.get_integer("Final analysis steps");
     warm_start           = prm.get_bool("Warm start");
+    secant_predictor     = prm.get("Warm start predictor") == "secant";
     step_halvings        = prm.get_integer("Step halvings");
     prm.leave_subsection();
   }

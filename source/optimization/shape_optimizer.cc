@@ -44,7 +44,8 @@ namespace softopt
           columns.push_back(f->name());
         for (const auto *c : {"max_design_change_mm", "wall_time_s",
                               "newton_iterations", "filter_iterations",
-                              "min_J_psi", "worst_quality"})
+                              "min_J_psi", "worst_quality", "worst_element_x_mm",
+                              "worst_element_y_mm", "worst_element_z_mm"})
           columns.emplace_back(c);
         history = std::make_unique<CsvWriter>(out.file("history.csv"),
                                               columns,
@@ -59,7 +60,8 @@ namespace softopt
         if (k > first && opt.every(k, opt.checkpoint_interval))
           Checkpoint::save(out.path(), k, d,
                            problem.design_configuration().initial_coordinates(),
-                           problem.shape_field(), *mma, problem.target_states());
+                           problem.shape_field(), *mma, problem.target_states(),
+                           problem.secant_predictor());
 
         Timer               timer;
         std::vector<double> values; // psi(d), X, path to every target
@@ -191,11 +193,12 @@ namespace softopt
   {
     Vector X_o = problem.create_design_vector(), psi = X_o;
     std::map<double, Vector> states;
+    SecantPredictor          secant;
     const unsigned int       k = Checkpoint::load(out.path(), d, X_o, psi, *mma,
                                             problem.hyperelastic_problem().create_vector(),
-                                            states);
+                                            states, secant);
     problem.restore(X_o, psi);
-    problem.set_target_states(states);
+    problem.set_target_states(states, secant);
 
     // history.csv keeps its header and the rows before the checkpoint.
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
@@ -277,6 +280,8 @@ namespace softopt
     row.push_back(std::to_string(health.iterations));
     row.push_back(CsvWriter::format(health.min_J_psi));
     row.push_back(CsvWriter::format(health.worst_quality));
+    for (unsigned int c = 0; c < 3; ++c)
+      row.push_back(CsvWriter::format(health.worst_element[c]));
     history->add_row(row);
 
     pcout << "iteration " << std::setw(4) << iteration;
@@ -287,6 +292,9 @@ namespace softopt
           << health.min_J_psi << "  Newton "
           << problem.path_report().newton_iterations
           << (problem.path_report().warm_started ? " (warm)" : "");
+    if (!problem.path_report().secant_failure.empty())
+      pcout << " (from the last design's states: the secant start failed, "
+            << problem.path_report().secant_failure << ")";
     if (!problem.path_report().warm_start_failure.empty())
       pcout << " (path from zero: the warm start failed, "
             << problem.path_report().warm_start_failure << ")";

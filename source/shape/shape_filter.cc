@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace softopt
@@ -309,10 +310,12 @@ namespace softopt
     const Result health  = mesh_health(psi);
     result.min_J_psi     = health.min_J_psi;
     result.worst_quality = health.worst_quality;
+    result.worst_element = health.worst_element;
     std::ostringstream message;
     message << "The shape field inverts elements (smallest J_psi = "
             << result.min_J_psi << ", worst element quality "
-            << result.worst_quality << "); the shape is refused. Reduce the "
+            << result.worst_quality << " at " << result.worst_element
+            << " mm); the shape is refused. Reduce the "
             << "design bound or the move limit, or increase G_psi or K_psi "
             << "(subsection \"Shape filter\").";
     AssertThrow(result.min_J_psi > 0 && result.worst_quality > 0,
@@ -377,6 +380,7 @@ namespace softopt
     std::vector<Tensor<2, 3>>            grad_psi(quadrature.size());
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
     Result                               result;
+    bool                                 has_cells = false;
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
@@ -403,11 +407,25 @@ namespace softopt
               edges += (p[a] - p[b]).norm_square();
           const double quality =
             V > 0 ? 12. * std::pow(3. * V, 2. / 3.) / edges : V;
-          result.worst_quality = std::min(result.worst_quality, quality);
+          has_cells = true;
+          if (quality < result.worst_quality)
+            {
+              result.worst_quality = quality;
+              result.worst_element = 0.25 * (p[0] + p[1] + p[2] + p[3]);
+            }
         }
-    const MPI_Comm comm  = dofs.get_communicator();
-    result.min_J_psi     = Utilities::MPI::min(result.min_J_psi, comm);
-    result.worst_quality = Utilities::MPI::min(result.worst_quality, comm);
+    const MPI_Comm comm = dofs.get_communicator();
+    result.min_J_psi    = Utilities::MPI::min(result.min_J_psi, comm);
+    // The worst element's quality and rank, then its centroid from there.
+    struct
+    {
+      double quality;
+      int    rank;
+    } worst{has_cells ? result.worst_quality : std::numeric_limits<double>::max(),
+            static_cast<int>(Utilities::MPI::this_mpi_process(comm))};
+    MPI_Allreduce(MPI_IN_PLACE, &worst, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm);
+    result.worst_quality = std::min(worst.quality, 1.);
+    MPI_Bcast(&result.worst_element[0], 3, MPI_DOUBLE, worst.rank, comm);
     return result;
   }
 

@@ -4,6 +4,7 @@
 #include <deal.II/lac/petsc_vector.h>
 
 #include <softopt/optimization/mma.h>
+#include <softopt/optimization/secant_predictor.h>
 
 #include <map>
 #include <string>
@@ -18,8 +19,9 @@ namespace softopt
    * iteration number, the design d, the initial coordinates X_o (changed by
    * mesh updates), the shape field psi (the filter's Newton starts there)
    * MMA's previous iterates and asymptotes, and the equilibrium states at
-   * the targets (the next design warm-starts from them), one binary file
-   * per rank.
+   * the targets (the next design warm-starts from them) with the warm
+   * start's secant (the last two accepted designs), one binary file per
+   * rank.
    * A new checkpoint is written beside the old one and then renamed over
    * it, so a run killed while writing keeps the previous checkpoint. A
    * restart needs the same parameter file and number of MPI ranks.
@@ -39,7 +41,8 @@ namespace softopt
          const Vector      &X_o,
          const Vector      &psi,
          const MMA         &mma,
-         const std::map<double, Vector> &states);
+         const std::map<double, Vector> &states,
+         const SecantPredictor          &secant);
 
     /** Reads the vectors (set up with the partition of this run; the
      * states like @p state_template) and MMA's state, and returns the
@@ -52,7 +55,8 @@ namespace softopt
          Vector            &psi,
          MMA               &mma,
          const Vector      &state_template,
-         std::map<double, Vector> &states);
+         std::map<double, Vector> &states,
+         SecantPredictor          &secant);
   } // namespace Checkpoint
 } // namespace softopt
 

@@ -7,6 +7,7 @@
 
 #include <softopt/app/settings.h>
 #include <softopt/functionals/functional.h>
+#include <softopt/optimization/secant_predictor.h>
 #include <softopt/physics/hyperelastic_problem.h>
 #include <softopt/shape/design_configuration.h>
 #include <softopt/shape/shape_filter.h>
@@ -97,10 +98,17 @@ namespace softopt
     const DesignConfiguration &
     design_configuration() const;
 
-    /** Sets the states at the targets (a restart: the next evaluate()
-     * warm-starts from them). */
+    /** Sets the states at the targets and the warm start's secant (a
+     * restart: the next evaluate() warm-starts from them like an
+     * uninterrupted run). */
     void
-    set_target_states(const std::map<double, Vector> &states);
+    set_target_states(const std::map<double, Vector> &states,
+                      const SecantPredictor          &secant);
+
+    /** The warm start's secant through the last two accepted designs (for
+     * a checkpoint). */
+    const SecantPredictor &
+    secant_predictor() const;
 
     /** What the last evaluate() did: whether it warm-started (else why
      * the warm start failed, if it was tried), and the Newton iterations
@@ -108,7 +116,15 @@ namespace softopt
     struct PathReport
     {
       bool         warm_started      = false;
+      /** The secant's alpha if Newton converged from its prediction (0: it
+       * did not start there or failed from there). */
+      double       secant_alpha      = 0;
+      /** Why Newton failed from the secant start (then it started from
+       * the last design's states). */
+      std::string  secant_failure;
       std::string  warm_start_failure;
+      /** Over all targets and starts (a start that failed counts the
+       * targets where it converged). */
       unsigned int newton_iterations = 0;
     };
 
@@ -130,10 +146,21 @@ namespace softopt
     std::vector<double>
     evaluate_design(const Vector &d);
 
-    /** Newton at each target from the previous design's state there;
-     * false (and the states are void) if Newton fails for one of them. */
+    /** Newton at each target from the secant prediction of its state,
+     * else from the previous design's state there; false (and the states
+     * are void) if Newton fails from both for one of them. */
     bool
     warm_start();
+
+    /** Newton at every target from @p states; true if it converged for
+     * all (then they are the new states). */
+    bool
+    newton_at_targets(std::map<double, Vector> start, std::string &failure);
+
+    /** X = X_o + psi, the nodal positions of the current design (locally
+     * owned entries). */
+    Vector
+    nodal_positions() const;
 
     Settings                                     &settings;
     MPI_Comm                                      comm;
@@ -146,6 +173,7 @@ namespace softopt
     Vector                                        psi;
     ShapeFilter::Result                           last_filter_result;
     std::map<double, Vector>                      states;
+    SecantPredictor                               predictor;
     TimerOutput                                   timer_output;
     PathReport                                    report;
     /** The tangent of the last assemble() is at states[load factor]

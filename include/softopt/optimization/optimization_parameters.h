@@ -28,6 +28,9 @@ namespace softopt
     unsigned int checkpoint_interval  = 10;
     unsigned int final_analysis_steps = 20;
     bool         warm_start           = true;
+    /** Whether the warm start extrapolates the states along the secant
+     * through the last two designs (SecantPredictor). */
+    bool         secant_predictor     = true;
     /** Halvings of a refused MMA step before the run stops. */
     unsigned int step_halvings = 3;
 

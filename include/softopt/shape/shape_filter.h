@@ -60,6 +60,8 @@ namespace softopt
       /** The worst mean-ratio quality of the tetrahedra of X = X_o + psi
        * through their corner nodes (1: equilateral, <= 0: inverted). */
       double worst_quality = 1;
+      /** The centroid of that tetrahedron in X, in mm. */
+      Point<3> worst_element;
     };
 
     /**
