@@ -3,7 +3,6 @@
 
 #include <softopt/optimization/checkpoint.h>
 
-#include <array>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -142,14 +141,15 @@ namespace softopt
         write_states(out, states);
         // The secant: the positions of the design of these states, and the
         // design before it.
-        for (const auto *design : {&secant.last_design(), &secant.previous_design()})
+        const auto &previous = secant.previous_design();
+        write_value<std::uint8_t>(out, secant.last_positions().size() > 0);
+        if (secant.last_positions().size() > 0)
+          write_vector(out, secant.last_positions());
+        write_value<std::uint8_t>(out, !previous.states.empty());
+        if (!previous.states.empty())
           {
-            write_value<std::uint8_t>(out, !design->states.empty());
-            if (!design->states.empty())
-              {
-                write_vector(out, design->X);
-                write_states(out, design->states);
-              }
+            write_vector(out, previous.X);
+            write_states(out, previous.states);
           }
         AssertThrow(out, ExcMessage("Writing the checkpoint " + file + " failed."));
       }
@@ -206,16 +206,23 @@ namespace softopt
       read_vector(in, psi, file);
       mma.load(in);
       states = read_states(in, state_template, file);
-      std::array<SecantPredictor::Design, 2> designs; // last, previous
+      Vector                  X_last;
+      SecantPredictor::Design previous;
       if (file_magic == magic) // older checkpoints have no secant
-        for (auto &design : designs)
+        {
           if (read_value<std::uint8_t>(in) && in)
             {
-              design.X = X_o;
-              read_vector(in, design.X, file);
-              design.states = read_states(in, state_template, file);
+              X_last = X_o;
+              read_vector(in, X_last, file);
             }
-      secant.restore(designs[1], designs[0]);
+          if (read_value<std::uint8_t>(in) && in)
+            {
+              previous.X = X_o;
+              read_vector(in, previous.X, file);
+              previous.states = read_states(in, state_template, file);
+            }
+        }
+      secant.restore(X_last, previous);
       AssertThrow(in, ExcMessage("The checkpoint " + file + " is truncated."));
       return iteration;
     }

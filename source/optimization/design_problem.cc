@@ -81,7 +81,7 @@ namespace softopt
       {
         const std::vector<double> values = evaluate_design(d);
         if (settings.optimization.warm_start && settings.optimization.secant_predictor)
-          predictor.accept(nodal_positions(), states);
+          predictor.accept(nodal_positions(), states_accepted);
         return values;
       }
     catch (...)
@@ -266,17 +266,13 @@ namespace softopt
     if (states.size() != targets.size())
       return false;
     if (settings.optimization.secant_predictor)
-      {
-        std::map<double, Vector> start = predictor.predict(nodal_positions(), states);
-        if (predictor.last_alpha() != 0)
-          {
-            if (newton_at_targets(std::move(start), report.secant_failure))
-              {
-                report.secant_alpha = predictor.last_alpha();
-                return true;
-              }
-          }
-      }
+      if (auto prediction = predictor.predict(nodal_positions(), states);
+          prediction &&
+          newton_at_targets(std::move(prediction->states), report.secant_failure))
+        {
+          report.secant_alpha = prediction->alpha;
+          return true;
+        }
     if (newton_at_targets(states, report.warm_start_failure))
       return true;
     states.clear();

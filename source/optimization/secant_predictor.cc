@@ -4,50 +4,49 @@
 
 namespace softopt
 {
-  std::map<double, SecantPredictor::Vector>
-  SecantPredictor::predict(const Vector &X, const std::map<double, Vector> &states)
+  std::optional<SecantPredictor::Prediction>
+  SecantPredictor::predict(const Vector &X, const std::map<double, Vector> &states) const
   {
-    alpha = 0;
-    if (previous.states.size() != states.size() || states.empty())
-      return states;
-    Vector step = X, secant = last.X;
-    step -= last.X;
+    if (states.empty() || previous.states.size() != states.size())
+      return std::nullopt;
+    Vector step = X, secant = X_last;
+    step -= X_last;
     secant -= previous.X;
     const double secant_norm2 = secant * secant;
     if (!(secant_norm2 > 0))
-      return states;
-    const double projection =
-      std::clamp((step * secant) / secant_norm2, -max_alpha, max_alpha);
+      return std::nullopt;
 
-    std::map<double, Vector> predicted = states;
-    for (auto &[load_factor, a] : predicted)
+    Prediction prediction{states,
+                          std::clamp((step * secant) / secant_norm2,
+                                     -max_alpha,
+                                     max_alpha)};
+    for (auto &[load_factor, a] : prediction.states)
       {
         const auto a_previous = previous.states.find(load_factor);
         if (a_previous == previous.states.end())
-          return states;
+          return std::nullopt;
         // a_k + alpha (a_k - a_{k-1})
-        a.sadd(1. + projection, -projection, a_previous->second);
+        a.sadd(1. + prediction.alpha, -prediction.alpha, a_previous->second);
       }
-    alpha = projection;
-    return predicted;
+    return prediction;
   }
 
 
 
   void
-  SecantPredictor::accept(const Vector &X, const std::map<double, Vector> &states)
+  SecantPredictor::accept(const Vector &X, const std::map<double, Vector> &last_states)
   {
-    if (!last.states.empty())
-      previous = std::move(last);
-    last = {X, states};
+    if (X_last.size() > 0 && !last_states.empty())
+      previous = {X_last, last_states};
+    X_last = X;
   }
 
 
 
-  const SecantPredictor::Design &
-  SecantPredictor::last_design() const
+  const SecantPredictor::Vector &
+  SecantPredictor::last_positions() const
   {
-    return last;
+    return X_last;
   }
 
 
@@ -61,18 +60,9 @@ namespace softopt
 
 
   void
-  SecantPredictor::restore(const Design &previous_, const Design &last_)
+  SecantPredictor::restore(const Vector &last_positions, const Design &previous_design)
   {
-    previous = previous_;
-    last     = last_;
-    alpha    = 0;
-  }
-
-
-
-  double
-  SecantPredictor::last_alpha() const
-  {
-    return alpha;
+    X_last   = last_positions;
+    previous = previous_design;
   }
 } // namespace softopt

@@ -4,6 +4,7 @@
 #include <deal.II/lac/petsc_vector.h>
 
 #include <map>
+#include <optional>
 
 namespace softopt
 {
@@ -21,7 +22,8 @@ namespace softopt
    * about eightfold against a_k (a shape change at fixed nodal
    * displacements strains the nearly incompressible body by far more than
    * the load does): Newton needs one step fewer (doc/theory.md). X is
-   * continuous across a mesh update, so the secant survives it.
+   * continuous across a mesh update, so the secant survives it. It keeps
+   * X_k, X_{k-1} and a_{k-1}; a_k is the caller's (DesignProblem's states).
    */
   class SecantPredictor
   {
@@ -36,39 +38,44 @@ namespace softopt
       std::map<double, Vector> states;
     };
 
+    /** The predicted start and the alpha it used. */
+    struct Prediction
+    {
+      std::map<double, Vector> states;
+      double                   alpha;
+    };
+
     /** |alpha| is capped here: a step much longer than the last one is
      * outside what the secant knows. */
     static constexpr double max_alpha = 2;
 
-    /** The states to start from for the design at nodal positions @p X,
-     * given the last accepted design's @p states (returned unchanged until
-     * two designs were accepted). */
-    std::map<double, Vector>
-    predict(const Vector &X, const std::map<double, Vector> &states);
+    /** The start for the design at nodal positions @p X from the last
+     * accepted design's @p states; none until two designs were accepted
+     * (or if the secant has no length). */
+    std::optional<Prediction>
+    predict(const Vector &X, const std::map<double, Vector> &states) const;
 
-    /** Records an accepted design: its positions and target states. */
+    /** Records an accepted design at nodal positions @p X; @p last_states
+     * are the states of the design accepted before it (empty for the
+     * first), which become a_{k-1}. */
     void
-    accept(const Vector &X, const std::map<double, Vector> &states);
+    accept(const Vector &X, const std::map<double, Vector> &last_states);
 
-    /** The last accepted design and the one before it (empty if there is
-     * none yet), for a checkpoint. */
-    const Design &
-    last_design() const;
+    /** X_k, the positions of the last accepted design (empty if none). */
+    const Vector &
+    last_positions() const;
 
+    /** X_{k-1} and a_{k-1} (empty if fewer than two were accepted). */
     const Design &
     previous_design() const;
 
     /** Sets the history (a restart from a checkpoint). */
     void
-    restore(const Design &previous, const Design &last);
-
-    /** alpha of the last predict() (0 if it had no secant). */
-    double
-    last_alpha() const;
+    restore(const Vector &last_positions, const Design &previous);
 
   private:
-    Design last, previous;
-    double alpha = 0;
+    Vector X_last;
+    Design previous;
   };
 } // namespace softopt
 
