@@ -4,10 +4,13 @@
 // restarted from its last checkpoint (at iteration 6, written after the
 // mesh update of that iteration), write the same history.csv, Newton
 // iterations included (the warm start's secant is in the checkpoint). The
-// loop must improve the objective.
+// loop must improve the objective. The same with a new mesh at every mesh
+// update ("Remesh below quality" = 1): the restart reads the mesh of
+// iteration 6 that the checkpoint names.
 
 #include <softopt/app/output_directory.h>
 #include <softopt/app/settings.h>
+#include <softopt/optimization/checkpoint.h>
 #include <softopt/optimization/shape_optimizer.h>
 
 #include "tests.h"
@@ -20,9 +23,16 @@ namespace
 {
   /** Runs the loop with at most @p iterations into @p directory. */
   void
-  optimize(const std::string &directory, const unsigned int iterations, const bool restart)
+  optimize(const std::string &directory,
+           const unsigned int iterations,
+           const bool         restart,
+           const double       remesh_quality)
   {
     softopt::Settings settings(SOURCE_DIR "/inputs/sphere_design.prm");
+    settings.optimization.remesh_quality      = remesh_quality;
+    if (restart) // as softopt optimize --restart
+      if (const auto mesh = softopt::Checkpoint::mesh_file(directory); !mesh.empty())
+        settings.geometry.mesh_file = mesh;
     settings.output_directory                 = directory;
     settings.print_timings                    = false;
     settings.optimization.maximum_iterations  = iterations;
@@ -62,14 +72,19 @@ main(int argc, char **argv)
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   TestLog                          log;
 
-  optimize("uninterrupted", 8, false);
-  optimize("interrupted", 7, false);
-  optimize("interrupted", 8, true);
-
-  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+  for (const double remesh_quality : {0., 1.})
     {
-      const auto a = read_history("uninterrupted/history.csv");
-      const auto b = read_history("interrupted/history.csv");
+      const std::string suffix = remesh_quality > 0 ? "_remeshed" : "";
+      optimize("uninterrupted" + suffix, 8, false, remesh_quality);
+      optimize("interrupted" + suffix, 7, false, remesh_quality);
+      optimize("interrupted" + suffix, 8, true, remesh_quality);
+      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+        continue;
+      deallog << (remesh_quality > 0 ? "A new mesh at every mesh update:" :
+                                       "Mesh updates:")
+              << std::endl;
+      const auto a = read_history("uninterrupted" + suffix + "/history.csv");
+      const auto b = read_history("interrupted" + suffix + "/history.csv");
       deallog << "rows: " << a.size() - 1 << " and " << b.size() - 1 << std::endl;
       double largest = 0;
       for (unsigned int r = 1; r < std::min(a.size(), b.size()); ++r)

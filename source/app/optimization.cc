@@ -6,6 +6,7 @@
 #include <softopt/app/output_directory.h>
 #include <softopt/io/stl_writer.h>
 #include <softopt/io/tracked_points.h>
+#include <softopt/optimization/checkpoint.h>
 #include <softopt/optimization/shape_optimizer.h>
 
 #include <cstdlib>
@@ -47,7 +48,12 @@ namespace softopt
   {
     ConditionalOStream pcout(std::cout,
                              Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
-    Timer         timer;
+    Timer timer;
+    // A checkpoint written after a remesh lives on that mesh.
+    if (restart)
+      if (const auto mesh = Checkpoint::mesh_file(settings.output_directory);
+          !mesh.empty())
+        settings.geometry.mesh_file = mesh;
     DesignProblem problem(settings);
     pcout << "Mesh: " << problem.hyperelastic_problem().get_dof_handler()
                            .get_triangulation()

@@ -126,28 +126,20 @@ namespace softopt
         const auto tmp = std::filesystem::temp_directory_path() /
                          ("softopt-" + std::to_string(::getpid()) + "-" +
                           std::filesystem::path(mesh_file).stem().string());
-        msh_file              = tmp.string() + ".msh";
-        const std::string log = tmp.string() + ".log";
+        msh_file      = tmp.string() + ".msh";
         const bool geo = std::filesystem::path(mesh_file).extension() == ".geo";
-        std::ostringstream command;
-        command << "gmsh " << (geo ? "-3 -order 2 " : "-0 ")
-                << "-format msh22 -v 3 ";
+        std::ostringstream arguments;
+        arguments << (geo ? "-3 -order 2 " : "-0 ") << "-format msh22 ";
         if (geo)
           {
-            command << "-setnumber h " << mesh_size << " ";
+            arguments << "-setnumber h " << mesh_size << " ";
             for (const auto &[name, value] : mesh_parameters)
-              command << "-setnumber " << name << " " << value << " ";
+              arguments << "-setnumber " << name << " " << value << " ";
           }
-        command << "\"" << mesh_file << "\" -o \"" << msh_file << "\" > \""
-                << log << "\" 2>&1";
-        const int status = std::system(command.str().c_str());
-        std::ifstream     log_in(log);
-        std::stringstream log_text;
-        log_text << log_in.rdbuf();
-        std::filesystem::remove(log);
-        if (status != 0 || !std::ifstream(msh_file).good())
-          msh_file = "gmsh failed on <" + mesh_file + "> (command: " +
-                     command.str() + "):\n" + log_text.str();
+        arguments << "\"" << mesh_file << "\"";
+        const std::string error = run_gmsh(arguments.str(), msh_file);
+        if (!error.empty())
+          msh_file = "gmsh failed on <" + mesh_file + "> " + error;
       }
     msh_file = Utilities::MPI::broadcast(comm, msh_file, 0);
     AssertThrow(msh_file.rfind("gmsh failed", 0) != 0,

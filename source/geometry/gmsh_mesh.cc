@@ -3,6 +3,8 @@
 #include <softopt/geometry/gmsh_mesh.h>
 
 #include <array>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -199,5 +201,23 @@ namespace softopt
                 ExcMessage("Cannot write the temporary mesh <" + linear_file +
                            ">."));
     return midpoints;
+  }
+
+
+
+  std::string
+  run_gmsh(const std::string &arguments, const std::string &output)
+  {
+    const std::string  log = output + ".log";
+    const std::string  command =
+      "gmsh " + arguments + " -v 3 -o \"" + output + "\" > \"" + log + "\" 2>&1";
+    const int          status = std::system(command.c_str());
+    std::ifstream      log_in(log);
+    std::ostringstream log_text;
+    log_text << log_in.rdbuf();
+    std::filesystem::remove(log);
+    if (status == 0 && std::ifstream(output).good())
+      return "";
+    return "(command: " + command + "):\n" + log_text.str();
   }
 } // namespace softopt

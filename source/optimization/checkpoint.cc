@@ -115,7 +115,8 @@ namespace softopt
          const Vector      &psi,
          const MMA         &mma,
          const std::map<double, Vector> &states,
-         const SecantPredictor          &secant)
+         const SecantPredictor          &secant,
+         const std::string              &mesh_file)
     {
       namespace fs     = std::filesystem;
       const auto  comm = d.get_mpi_communicator();
@@ -128,6 +129,8 @@ namespace softopt
           fs::create_directories(next);
         }
       MPI_Barrier(comm);
+      if (root && !mesh_file.empty())
+        std::ofstream(next + "/mesh") << mesh_file << '\n';
       {
         const auto    file = rank_file(next, comm);
         std::ofstream out(file, std::ios::binary);
@@ -164,6 +167,21 @@ namespace softopt
           fs::remove_all(dir + ".old");
         }
       MPI_Barrier(comm);
+    }
+
+
+
+    std::string
+    mesh_file(const std::string &output_directory)
+    {
+      // As load(): ".old" if a run was killed between the renames of save().
+      const auto dir = std::filesystem::exists(directory(output_directory)) ?
+                         directory(output_directory) :
+                         directory(output_directory) + ".old";
+      std::string   file;
+      std::ifstream in(dir + "/mesh");
+      std::getline(in, file);
+      return file;
     }
 
 

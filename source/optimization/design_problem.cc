@@ -2,6 +2,7 @@
 
 #include <softopt/optimization/design_problem.h>
 #include <softopt/base/step_failure.h>
+#include <softopt/shape/remesh.h>
 #include <softopt/shape/residual_shape_derivative.h>
 
 #include <algorithm>
@@ -14,6 +15,21 @@ namespace softopt
     , triangulation(comm)
     , timer_output(comm, std::cout, TimerOutput::never, TimerOutput::wall_times)
   {
+    build();
+    for (const auto &f : settings.functionals)
+      functionals_.push_back(f.get());
+    targets = settings.loading.target_load_factors;
+    for (const auto *f : functionals_)
+      targets.push_back(f->load_factor());
+    std::sort(targets.begin(), targets.end());
+    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+  }
+
+
+
+  void
+  DesignProblem::build()
+  {
     settings.geometry.create_triangulation(triangulation);
     design   = std::make_unique<DesignConfiguration>(triangulation, settings.geometry);
     problem  = std::make_unique<HyperelasticProblem>(triangulation,
@@ -25,14 +41,6 @@ namespace softopt
     problem->set_linear_solver(settings.linear_solver);
     settings.shape_filter.setup(*design, settings.geometry);
     psi = design->create_vector();
-
-    for (const auto &f : settings.functionals)
-      functionals_.push_back(f.get());
-    targets = settings.loading.target_load_factors;
-    for (const auto *f : functionals_)
-      targets.push_back(f->load_factor());
-    std::sort(targets.begin(), targets.end());
-    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
   }
 
 
@@ -206,6 +214,24 @@ namespace softopt
     psi = 0;
     // Omega_o changed: the filter's matrices and |Omega_o| with it.
     settings.shape_filter.setup(*design, settings.geometry);
+  }
+
+
+
+  void
+  DesignProblem::remesh(const std::string &msh_file)
+  {
+    remesh_design(*design, msh_file);
+    settings.geometry.mesh_file = msh_file;
+    problem.reset(); // before the DoFs and the mesh it lives on
+    design.reset();
+    triangulation.clear();
+    build();
+    // Nothing carries over: the next evaluate() follows the path from zero.
+    states.clear();
+    predictor          = SecantPredictor();
+    tangent_at         = -1;
+    last_filter_result = ShapeFilter::Result();
   }
 
 

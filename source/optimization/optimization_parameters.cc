@@ -28,6 +28,19 @@ namespace softopt
                       "Every this many iterations the mesh coordinates are "
                       "updated, X_o <- X_o + psi and d <- 0, which frees the "
                       "box constraints again (0: never; the paper uses 50).");
+    prm.declare_entry("Remesh below quality",
+                      "0",
+                      Patterns::Double(0, 1),
+                      "At a mesh update, if the design's worst element has a "
+                      "mean-ratio quality below this (1: equilateral, 0: "
+                      "flat), gmsh meshes the design anew inside its "
+                      "boundary triangles (which keep their boundary ids "
+                      "and curved midside nodes), written as "
+                      "mesh-<iteration>.msh into the output directory; d, psi "
+                      "and MMA start afresh and the physics follows the path "
+                      "from zero. For designs that flatten elements the mesh "
+                      "update keeps (thin walls one element thick). 0: never, "
+                      "as in the paper.");
     prm.declare_entry("Output interval",
                       "10",
                       Patterns::Integer(0),
@@ -85,6 +98,7 @@ namespace softopt
     move_limit           = prm.get_double("Move limit");
     design_bound         = prm.get_double("Design bound");
     mesh_update_interval = prm.get_integer("Mesh update interval");
+    remesh_quality       = prm.get_double("Remesh below quality");
     output_interval      = prm.get_integer("Output interval");
     checkpoint_interval  = prm.get_integer("Checkpoint interval");
     final_analysis_steps = prm.get_integer("Final analysis steps");

@@ -55,13 +55,13 @@ namespace softopt
     for (; k < opt.maximum_iterations; ++k)
       {
         auto before_update = k > first && opt.every(k, opt.mesh_update_interval) ?
-                               update_mesh() : // X_o <- X_o + psi(d), d <- 0
+                               update_mesh(k) : // X_o <- X_o + psi(d), d <- 0
                                nullptr;
         if (k > first && opt.every(k, opt.checkpoint_interval))
           Checkpoint::save(out.path(), k, d,
                            problem.design_configuration().initial_coordinates(),
                            problem.shape_field(), *mma, problem.target_states(),
-                           problem.secant_predictor());
+                           problem.secant_predictor(), mesh_file);
 
         Timer               timer;
         std::vector<double> values; // psi(d), X, path to every target
@@ -98,7 +98,7 @@ namespace softopt
 
 
   std::unique_ptr<ShapeOptimizer::MeshBeforeUpdate>
-  ShapeOptimizer::update_mesh()
+  ShapeOptimizer::update_mesh(const unsigned int k)
   {
     // The mesh moves to the design d, not yet evaluated; if that design is
     // refused the update is undone and the step halved on the old mesh.
@@ -117,6 +117,38 @@ namespace softopt
     catch (const std::exception &)
       {
         undo_mesh_update(before); // evaluate() refuses d
+        return before;
+      }
+
+    // Elements the design flattened stay flat in the updated mesh: mesh the
+    // design anew (not undone: the design is the same).
+    const double quality = problem.filter_result().worst_quality;
+    if (quality < settings.optimization.remesh_quality)
+      {
+        const std::string file = out.file("mesh-" + std::to_string(k) + ".msh");
+        try
+          {
+            problem.remesh(file);
+          }
+        catch (const std::exception &e)
+          {
+            pcout << "  iteration " << k << ": remeshing failed, the run goes "
+                  << "on with the updated mesh: " << e.what() << std::endl;
+            return before;
+          }
+        mesh_file = file;
+        d         = problem.create_design_vector();
+        accepted  = d;
+        reset_mma();
+        before.reset();
+        pcout << "  iteration " << k << ": worst element quality " << quality
+              << " < " << settings.optimization.remesh_quality
+              << ", the design is meshed anew: "
+              << problem.hyperelastic_problem()
+                   .get_dof_handler()
+                   .get_triangulation()
+                   .n_global_active_cells()
+              << " tetrahedra (" << file << ")" << std::endl;
       }
     return before;
   }
@@ -194,6 +226,7 @@ namespace softopt
     Vector X_o = problem.create_design_vector(), psi = X_o;
     std::map<double, Vector> states;
     SecantPredictor          secant;
+    mesh_file                  = Checkpoint::mesh_file(out.path());
     const unsigned int       k = Checkpoint::load(out.path(), d, X_o, psi, *mma,
                                             problem.hyperelastic_problem().create_vector(),
                                             states, secant);

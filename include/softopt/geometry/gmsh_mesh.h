@@ -56,6 +56,14 @@ namespace softopt
   EdgeMidpoints
   split_quadratic_gmsh_mesh(const std::string &file,
                             const std::string &linear_file);
+
+  /**
+   * Runs gmsh with @p arguments, writing @p output (on the calling rank
+   * only). Returns "" if gmsh succeeded and wrote @p output, else the
+   * command and gmsh's log, for a message.
+   */
+  std::string
+  run_gmsh(const std::string &arguments, const std::string &output);
 } // namespace softopt
 
 #endif

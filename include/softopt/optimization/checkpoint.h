@@ -21,7 +21,7 @@ namespace softopt
    * MMA's previous iterates and asymptotes, and the equilibrium states at
    * the targets (the next design warm-starts from them) with the warm
    * start's secant (the last two accepted designs), one binary file per
-   * rank.
+   * rank; and the file of the mesh, if the design was remeshed.
    * A new checkpoint is written beside the old one and then renamed over
    * it, so a run killed while writing keeps the previous checkpoint. A
    * restart needs the same parameter file and number of MPI ranks.
@@ -42,7 +42,14 @@ namespace softopt
          const Vector      &psi,
          const MMA         &mma,
          const std::map<double, Vector> &states,
-         const SecantPredictor          &secant);
+         const SecantPredictor          &secant,
+         const std::string              &mesh_file);
+
+    /** The mesh file the checkpoint in @p output_directory was written on,
+     * if the run remeshed the design ("" otherwise: the parameter file's
+     * mesh). A restart builds its mesh from it. */
+    std::string
+    mesh_file(const std::string &output_directory);
 
     /** Reads the vectors (set up with the partition of this run; the
      * states like @p state_template) and MMA's state, and returns the

@@ -75,6 +75,13 @@ namespace softopt
     void
     update_mesh(const Vector &d);
 
+    /** A new mesh of the current design X = X_o + psi (remesh_design()),
+     * written to @p msh_file and read from there, with X_o the new mesh,
+     * psi = 0 and no states (the next evaluate() follows the path from
+     * zero). The caller starts d and MMA afresh. */
+    void
+    remesh(const std::string &msh_file);
+
     /** psi of the last filter solve. */
     const Vector &
     shape_field() const;
@@ -142,6 +149,11 @@ namespace softopt
     target_states() const;
 
   private:
+    /** Mesh, design configuration, physics and filter from the geometry
+     * of the settings. */
+    void
+    build();
+
     /** evaluate() without the restore on failure. */
     std::vector<double>
     evaluate_design(const Vector &d);

@@ -24,6 +24,9 @@ namespace softopt
     /** |d| <= design bound, in mm. */
     double design_bound = 1.2;
     unsigned int mesh_update_interval = 50;
+    /** A mesh update remeshes the design when its worst element quality
+     * is below this (0: never). */
+    double       remesh_quality       = 0;
     unsigned int output_interval      = 10;
     unsigned int checkpoint_interval  = 10;
     unsigned int final_analysis_steps = 20;

@@ -51,10 +51,13 @@ namespace softopt
       Vector initial_coordinates, shape_field, d, accepted;
     };
 
-    /** X_o <- X_o + psi(d), d <- 0 and a fresh MMA; returns what it
-     * changed (undone already if the filter refused psi(d)). */
+    /** X_o <- X_o + psi(d), d <- 0 and a fresh MMA, at iteration @p k;
+     * remeshes the design if its worst element quality is below "Remesh
+     * below quality". Returns what it changed, to undo (nothing if the
+     * filter refused psi(d) and it was undone already, or after a new
+     * mesh). */
     std::unique_ptr<MeshBeforeUpdate>
-    update_mesh();
+    update_mesh(const unsigned int k);
 
     /** The functional values at d into @p values; a refused d is halved
      * towards the accepted design (if @p may_halve, at most Step halvings
@@ -104,6 +107,9 @@ namespace softopt
     std::unique_ptr<CsvWriter> history;
     std::map<std::string, std::unique_ptr<PvdSeries>> snapshots;
     bool                       stopped_on_error = false;
+    /** The mesh file of the last remesh, for the checkpoint ("": the
+     * parameter file's mesh). */
+    std::string                mesh_file;
   };
 } // namespace softopt
 

@@ -1,0 +1,33 @@
+#ifndef softopt_shape_boundary_faces_h
+#define softopt_shape_boundary_faces_h
+
+#include <deal.II/base/point.h>
+
+#include <softopt/shape/design_configuration.h>
+
+#include <array>
+#include <vector>
+
+namespace softopt
+{
+  /** A boundary face of the quadratic mesh in the design configuration
+   * X = X_o + psi. */
+  struct BoundaryFace
+  {
+    /** Counter-clockwise seen from outside (outward normal). */
+    std::array<Point<3>, 3> corner;
+    /** midpoint[k]: the midside node of the edge opposite corner k. */
+    std::array<Point<3>, 3> midpoint;
+    types::boundary_id      boundary_id;
+  };
+
+  /**
+   * The boundary faces of this rank's cells, with their nodes at X. Faces
+   * of neighbouring cells read shared nodes from the same degrees of
+   * freedom, so the whole boundary is watertight to the last bit.
+   */
+  std::vector<BoundaryFace>
+  locally_owned_boundary_faces(const DesignConfiguration &design);
+} // namespace softopt
+
+#endif

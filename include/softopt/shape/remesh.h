@@ -1,0 +1,28 @@
+#ifndef softopt_shape_remesh_h
+#define softopt_shape_remesh_h
+
+#include <softopt/shape/design_configuration.h>
+
+#include <string>
+
+namespace softopt
+{
+  /**
+   * A new tetrahedral mesh of the design X = X_o + psi, for when the mesh
+   * update of Section 5 would keep elements the design has flattened:
+   * gmsh meshes the volume enclosed by the design's boundary triangles
+   * (through their corner nodes, each tagged with its boundary id), so the
+   * boundary triangulation and its ids stay and the interior is new.
+   * Quadratic tetrahedra; the midside nodes of the boundary edges are moved
+   * from gmsh's straight midpoints to the design's, so the new mesh has
+   * the design's curved P2 surface (interior midside nodes are straight).
+   *
+   * Collective. Rank 0 writes @p msh_file (gmsh format 2.2) and, beside it,
+   * the boundary it was meshed from (.surface.msh, linear) and the gmsh
+   * script (.geo). Throws a message with gmsh's log if gmsh fails.
+   */
+  void
+  remesh_design(const DesignConfiguration &design, const std::string &msh_file);
+} // namespace softopt
+
+#endif

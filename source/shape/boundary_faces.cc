@@ -1,0 +1,59 @@
+#include <softopt/shape/boundary_faces.h>
+
+namespace softopt
+{
+  std::vector<BoundaryFace>
+  locally_owned_boundary_faces(const DesignConfiguration &design)
+  {
+    const auto &X = design.positions();
+    // The node whose DoFs are @p dof(c) for the components c.
+    const auto position = [&](const auto &dof) {
+      return Point<3>(X(dof(0)), X(dof(1)), X(dof(2)));
+    };
+    std::vector<BoundaryFace> faces;
+    for (const auto &cell : design.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        {
+          Point<3> cell_center;
+          for (const unsigned int v : cell->vertex_indices())
+            cell_center += position([&](const unsigned int c) {
+                             return cell->vertex_dof_index(v, c);
+                           }) / 4.;
+          for (const unsigned int f : cell->face_indices())
+            if (cell->at_boundary(f))
+              {
+                const auto   face = cell->face(f);
+                BoundaryFace result;
+                result.boundary_id = face->boundary_id();
+                for (unsigned int v = 0; v < 3; ++v)
+                  result.corner[v] = position([&](const unsigned int c) {
+                    return face->vertex_dof_index(v, c);
+                  });
+                for (unsigned int l = 0; l < 3; ++l)
+                  {
+                    const auto   line     = face->line(l);
+                    unsigned int opposite = 0;
+                    for (unsigned int v = 0; v < 3; ++v)
+                      if (face->vertex_index(v) != line->vertex_index(0) &&
+                          face->vertex_index(v) != line->vertex_index(1))
+                        opposite = v;
+                    result.midpoint[opposite] = position(
+                      [&](const unsigned int c) { return line->dof_index(c); });
+                  }
+                // Outward: away from the cell's center.
+                const Tensor<1, 3> normal =
+                  cross_product_3d(result.corner[1] - result.corner[0],
+                                   result.corner[2] - result.corner[0]);
+                const Point<3> face_center =
+                  (result.corner[0] + result.corner[1] + result.corner[2]) / 3.;
+                if (normal * (face_center - cell_center) < 0)
+                  {
+                    std::swap(result.corner[1], result.corner[2]);
+                    std::swap(result.midpoint[1], result.midpoint[2]);
+                  }
+                faces.push_back(result);
+              }
+        }
+    return faces;
+  }
+} // namespace softopt

@@ -1,0 +1,274 @@
+#include <deal.II/base/mpi.h>
+
+#include <softopt/geometry/gmsh_mesh.h>
+#include <softopt/shape/boundary_faces.h>
+#include <softopt/shape/remesh.h>
+
+#include <algorithm>
+#include <array>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <map>
+
+namespace softopt
+{
+  namespace
+  {
+    /** Exact lexicographic order: the faces of neighbouring cells read a
+     * shared node from the same DoFs, so equal nodes are equal bit for
+     * bit. */
+    struct Less
+    {
+      bool
+      operator()(const Point<3> &a, const Point<3> &b) const
+      {
+        return std::lexicographical_compare(&a[0], &a[0] + 3, &b[0], &b[0] + 3);
+      }
+    };
+
+    /** Lexicographic order up to @p tolerance: gmsh writes the corners it
+     * read back with 16 digits, so they may differ in the last bit. Nodes
+     * are much farther apart than the tolerance. */
+    struct NearlyLess
+    {
+      double tolerance;
+      bool
+      operator()(const Point<3> &a, const Point<3> &b) const
+      {
+        for (unsigned int d = 0; d < 3; ++d)
+          if (a[d] < b[d] - tolerance)
+            return true;
+          else if (a[d] > b[d] + tolerance)
+            return false;
+        return false;
+      }
+    };
+
+    /** Per face: 3 corners, 3 midside nodes (x, y, z each), boundary id. */
+    constexpr unsigned int face_size = 19;
+
+    Point<3>
+    point(const std::vector<double> &part, const std::size_t offset)
+    {
+      return Point<3>(part[offset], part[offset + 1], part[offset + 2]);
+    }
+
+    /** A boundary edge by the numbers of its corners, smaller first. */
+    using Edge = std::pair<unsigned int, unsigned int>;
+
+    Edge
+    edge(const unsigned int a, const unsigned int b)
+    {
+      return {std::min(a, b), std::max(a, b)};
+    }
+
+    /** The boundary's corner nodes with their numbers, and the curved
+     * midside node of every boundary edge. */
+    struct Surface
+    {
+      std::map<Point<3>, unsigned int, Less> number;
+      std::map<Edge, Point<3>>               midpoints;
+    };
+
+    /**
+     * Writes the boundary triangles (corners only) with their boundary ids
+     * as discrete surfaces, in gmsh's format 2.2.
+     */
+    Surface
+    write_surface(const std::vector<std::vector<double>> &parts,
+                  const std::string                      &file)
+    {
+      Surface surface;
+      auto   &number = surface.number;
+      for (const auto &part : parts)
+        for (std::size_t t = 0; t < part.size(); t += face_size)
+          for (unsigned int v = 0; v < 3; ++v)
+            number.emplace(point(part, t + 3 * v), 0);
+      std::ofstream out(file);
+      out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
+          << number.size() << "\n"
+          << std::setprecision(17);
+      unsigned int n = 0;
+      for (auto &[p, i] : number)
+        {
+          i = ++n;
+          out << i << " " << p[0] << " " << p[1] << " " << p[2] << "\n";
+        }
+      // The triangles as (boundary id, corners), sorted: the same file
+      // (and so the same mesh) on any number of MPI ranks.
+      std::vector<std::array<unsigned int, 4>> triangles;
+      auto &midpoints = surface.midpoints;
+      for (const auto &part : parts)
+        for (std::size_t t = 0; t < part.size(); t += face_size)
+          {
+            std::array<unsigned int, 4> triangle;
+            triangle[0] = static_cast<unsigned int>(part[t + 18]);
+            for (unsigned int v = 0; v < 3; ++v)
+              triangle[v + 1] = number.at(point(part, t + 3 * v));
+            triangles.push_back(triangle);
+            // midpoint[k] is opposite corner k.
+            for (unsigned int k = 0; k < 3; ++k)
+              midpoints[edge(triangle[1 + (k + 1) % 3], triangle[1 + (k + 2) % 3])] =
+                point(part, t + 9 + 3 * k);
+          }
+      std::sort(triangles.begin(), triangles.end());
+      out << "$EndNodes\n$Elements\n" << triangles.size() << "\n";
+      n = 0;
+      for (const auto &[id, a, b, c] : triangles)
+        // Physical and elementary tag: the boundary id.
+        out << ++n << " 2 2 " << id << " " << id << " " << a << " " << b
+            << " " << c << "\n";
+      out << "$EndElements\n";
+      AssertThrow(out, ExcMessage("Cannot write " + file));
+      return surface;
+    }
+
+    /**
+     * Moves the midside nodes of the boundary edges in gmsh's quadratic
+     * @p file (format 2.2), which gmsh put at the straight edges' midpoints,
+     * to the design's curved @p midpoints, so the new mesh has the design's
+     * P2 surface. gmsh's corner nodes are found among the boundary's by
+     * position (gmsh renumbers them); a midside node belongs to the edge
+     * whose straight midpoint is nearest (as in split_quadratic_gmsh_mesh).
+     */
+    void
+    restore_curved_midpoints(const std::string &file, const Surface &surface)
+    {
+      double size = 1;
+      for (const auto &[p, n] : surface.number)
+        size = std::max(size, p.norm());
+      std::map<Point<3>, unsigned int, NearlyLess> number(
+        surface.number.begin(), surface.number.end(), NearlyLess{1e-12 * size});
+      std::vector<std::string> lines;
+      {
+        std::ifstream in(file);
+        for (std::string line; std::getline(in, line);)
+          lines.push_back(line);
+      }
+      const auto section = [&](const std::string &name) {
+        const auto it = std::find(lines.begin(), lines.end(), name);
+        AssertThrow(it != lines.end(),
+                    ExcMessage("gmsh wrote " + file + " without " + name));
+        return std::size_t(it - lines.begin()) + 2; // after the count
+      };
+      std::map<unsigned int, std::size_t> line_of_node;
+      std::map<unsigned int, Point<3>>    node;
+      // gmsh's tag -> the boundary's number (0: an interior node).
+      std::map<unsigned int, unsigned int> boundary_number;
+      for (std::size_t l = section("$Nodes"); lines[l] != "$EndNodes"; ++l)
+        {
+          std::istringstream in(lines[l]);
+          unsigned int       tag;
+          Point<3>           p;
+          in >> tag >> p[0] >> p[1] >> p[2];
+          line_of_node[tag] = l;
+          node[tag]         = p;
+          const auto it     = number.find(p);
+          boundary_number[tag] = it != number.end() ? it->second : 0;
+        }
+      std::map<unsigned int, Point<3>> moved;
+      for (std::size_t l = section("$Elements"); lines[l] != "$EndElements"; ++l)
+        {
+          std::istringstream in(lines[l]);
+          unsigned int       tag, type, n_tags;
+          in >> tag >> type >> n_tags;
+          if (type != 9 && type != 11) // 6-node triangle, 10-node tetrahedron
+            continue;
+          for (unsigned int i = 0; i < n_tags; ++i)
+            in >> tag;
+          std::vector<unsigned int> nodes(type == 9 ? 6 : 10);
+          for (auto &n : nodes)
+            in >> n;
+          const unsigned int n_corners = type == 9 ? 3 : 4;
+          for (unsigned int m = n_corners; m < nodes.size(); ++m)
+            {
+              double best = std::numeric_limits<double>::max();
+              Edge   nearest;
+              for (unsigned int a = 0; a < n_corners; ++a)
+                for (unsigned int b = a + 1; b < n_corners; ++b)
+                  {
+                    const double distance = node.at(nodes[m]).distance(
+                      (node.at(nodes[a]) + node.at(nodes[b])) / 2.);
+                    if (distance < best)
+                      {
+                        best    = distance;
+                        nearest = edge(boundary_number.at(nodes[a]),
+                                       boundary_number.at(nodes[b]));
+                      }
+                  }
+              if (const auto it = surface.midpoints.find(nearest);
+                  nearest.first > 0 && it != surface.midpoints.end())
+                moved[nodes[m]] = it->second;
+            }
+        }
+      for (const auto &[tag, p] : moved)
+        {
+          std::ostringstream line;
+          line << std::setprecision(17) << tag << " " << p[0] << " " << p[1]
+               << " " << p[2];
+          lines[line_of_node.at(tag)] = line.str();
+        }
+      std::ofstream out(file);
+      for (const auto &line : lines)
+        out << line << '\n';
+      AssertThrow(out, ExcMessage("Cannot write " + file));
+    }
+  } // namespace
+
+
+
+  void
+  remesh_design(const DesignConfiguration &design, const std::string &msh_file)
+  {
+    const MPI_Comm comm = design.get_dof_handler().get_communicator();
+    std::vector<double> local;
+    for (const auto &face : locally_owned_boundary_faces(design))
+      {
+        for (const auto *nodes : {&face.corner, &face.midpoint})
+          for (const auto &p : *nodes)
+            for (unsigned int d = 0; d < 3; ++d)
+              local.push_back(p[d]);
+        local.push_back(face.boundary_id);
+      }
+    const auto  parts = Utilities::MPI::gather(comm, local, 0);
+    std::string error;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      try
+        {
+          const std::string stem =
+            (std::filesystem::path(msh_file).parent_path() /
+             std::filesystem::path(msh_file).stem())
+              .string();
+          const auto surface = write_surface(parts, stem + ".surface.msh");
+          std::ofstream geo(stem + ".geo");
+          geo << "// softopt: a new mesh of the design inside its boundary\n"
+              << "Merge \"" << std::filesystem::path(stem).filename().string()
+              << ".surface.msh\";\n"
+              << "// HXT: no slivers between the faces of walls one element\n"
+              << "// thick, where the default Delaunay left some; one thread\n"
+              << "// for a reproducible mesh.\n"
+              << "Mesh.Algorithm3D = 10;\n"
+              << "General.NumThreads = 1;\n"
+              << "Surface Loop(1) = Surface{:};\n"
+              << "Volume(1) = {1};\n"
+              << "Physical Volume(1) = {1};\n";
+          geo.close();
+          AssertThrow(geo, ExcMessage("Cannot write " + stem + ".geo"));
+          const std::string log =
+            run_gmsh("-3 -order 2 -format msh22 \"" + stem + ".geo\"", msh_file);
+          if (!log.empty())
+            error = "gmsh could not mesh the design " + log;
+          else
+            restore_curved_midpoints(msh_file, surface);
+        }
+      catch (const std::exception &e)
+        {
+          error = e.what();
+        }
+    error = Utilities::MPI::broadcast(comm, error, 0);
+    AssertThrow(error.empty(), ExcMessage(error));
+  }
+} // namespace softopt
