@@ -13,6 +13,7 @@
 #include <softopt/io/stl_writer.h>
 #include <softopt/shape/design_configuration.h>
 
+#include "body_volume.h"
 #include "tests.h"
 
 #include <array>
@@ -24,23 +25,6 @@ using namespace softopt_tests;
 
 namespace
 {
-  double
-  mesh_volume(const softopt::DesignConfiguration &design)
-  {
-    FE_SimplexP<3>  fe(1);
-    QGaussSimplex<3> quadrature(3);
-    FEValues<3> fe_values(design.get_mapping(), fe, quadrature, update_JxW_values);
-    double      volume = 0;
-    for (const auto &cell : design.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            volume += fe_values.JxW(q);
-        }
-    return Utilities::MPI::sum(volume, MPI_COMM_WORLD);
-  }
-
   /** Reads a binary STL and reports its topology and enclosed volume. */
   void
   check_stl(const std::string &file, const double reference_volume)
@@ -104,7 +88,7 @@ namespace
 
     const std::string file = name + ".stl";
     softopt::write_design_stl(design, file);
-    const double volume = mesh_volume(design);
+    const double volume = body_volume(design);
     deallog << name << ":" << std::endl;
     if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       {

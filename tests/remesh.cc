@@ -15,6 +15,7 @@
 #include <softopt/optimization/design_problem.h>
 #include <softopt/shape/boundary_faces.h>
 
+#include "body_volume.h"
 #include "tests.h"
 
 #include <filesystem>
@@ -23,26 +24,6 @@ using namespace softopt_tests;
 
 namespace
 {
-  /** The volume of the body in the design configuration. */
-  double
-  body_volume(const softopt::DesignConfiguration &design)
-  {
-    const QGaussSimplex<3> quadrature(3);
-    FEValues<3>            fe_values(design.get_mapping(),
-                          design.get_dof_handler().get_fe(),
-                          quadrature,
-                          update_JxW_values);
-    double                 volume = 0;
-    for (const auto &cell : design.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          fe_values.reinit(cell);
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
-            volume += fe_values.JxW(q);
-        }
-    return Utilities::MPI::sum(volume, MPI_COMM_WORLD);
-  }
-
   /** The boundary faces per boundary id, and all their corners (on every
    * rank). */
   std::pair<std::map<unsigned int, unsigned int>, std::vector<Point<3>>>

@@ -126,6 +126,50 @@ namespace softopt
       return surface;
     }
 
+    /** A quadratic tetrahedron of gmsh's mesh: corner tags, and per edge
+     * its corners (local) and midside node's tag. */
+    struct Tetrahedron
+    {
+      std::array<unsigned int, 4>                                corners;
+      std::array<std::pair<Edge, unsigned int>, 6>               edges;
+    };
+
+    /**
+     * min det J / max det J of the P2 map of @p t at its ten nodes and
+     * centroid (negative: inverted), with node positions from @p position.
+     */
+    template <typename Position>
+    double
+    jacobian_ratio(const Tetrahedron &t, const Position &position)
+    {
+      // Barycentric L_0 = 1 - x - y - z, L_a = x_a, and their gradients.
+      const std::array<Tensor<1, 3>, 4> dL{{Tensor<1, 3>({-1., -1., -1.}),
+                                            Tensor<1, 3>({1., 0., 0.}),
+                                            Tensor<1, 3>({0., 1., 0.}),
+                                            Tensor<1, 3>({0., 0., 1.})}};
+      std::vector<Point<3>> points{Point<3>(0, 0, 0), Point<3>(1, 0, 0),
+                                   Point<3>(0, 1, 0), Point<3>(0, 0, 1),
+                                   Point<3>(.25, .25, .25)};
+      for (const auto &[local, tag] : t.edges)
+        points.push_back((points[local.first] + points[local.second]) / 2.);
+      double smallest = std::numeric_limits<double>::max(), largest = 0;
+      for (const auto &x : points)
+        {
+          const std::array<double, 4> L{{1 - x[0] - x[1] - x[2], x[0], x[1], x[2]}};
+          Tensor<2, 3>                J;
+          // Corners: L_a (2 L_a - 1); edges: 4 L_a L_b.
+          for (unsigned int a = 0; a < 4; ++a)
+            J += outer_product(position(t.corners[a]), (4 * L[a] - 1) * dL[a]);
+          for (const auto &[local, tag] : t.edges)
+            J += outer_product(position(tag),
+                               4 * (L[local.first] * dL[local.second] +
+                                    L[local.second] * dL[local.first]));
+          smallest = std::min(smallest, determinant(J));
+          largest  = std::max(largest, determinant(J));
+        }
+      return smallest / largest;
+    }
+
     /**
      * Moves the midside nodes of the boundary edges in gmsh's quadratic
      * @p file (format 2.2), which gmsh put at the straight edges' midpoints,
@@ -133,6 +177,8 @@ namespace softopt
      * P2 surface. gmsh's corner nodes are found among the boundary's by
      * position (gmsh renumbers them); a midside node belongs to the edge
      * whose straight midpoint is nearest (as in split_quadratic_gmsh_mesh).
+     * Where that would make an element's Jacobian vary by more than a
+     * factor 5 (or invert it), its edges stay straight.
      */
     void
     restore_curved_midpoints(const std::string &file, const Surface &surface)
@@ -170,6 +216,7 @@ namespace softopt
           boundary_number[tag] = it != number.end() ? it->second : 0;
         }
       std::map<unsigned int, Point<3>> moved;
+      std::vector<Tetrahedron>         tetrahedra;
       for (std::size_t l = section("$Elements"); lines[l] != "$EndElements"; ++l)
         {
           std::istringstream in(lines[l]);
@@ -183,10 +230,11 @@ namespace softopt
           for (auto &n : nodes)
             in >> n;
           const unsigned int n_corners = type == 9 ? 3 : 4;
+          Tetrahedron        tetrahedron;
           for (unsigned int m = n_corners; m < nodes.size(); ++m)
             {
               double best = std::numeric_limits<double>::max();
-              Edge   nearest;
+              Edge   nearest, local;
               for (unsigned int a = 0; a < n_corners; ++a)
                 for (unsigned int b = a + 1; b < n_corners; ++b)
                   {
@@ -195,6 +243,7 @@ namespace softopt
                     if (distance < best)
                       {
                         best    = distance;
+                        local   = {a, b};
                         nearest = edge(boundary_number.at(nodes[a]),
                                        boundary_number.at(nodes[b]));
                       }
@@ -202,7 +251,32 @@ namespace softopt
               if (const auto it = surface.midpoints.find(nearest);
                   nearest.first > 0 && it != surface.midpoints.end())
                 moved[nodes[m]] = it->second;
+              if (type == 11)
+                tetrahedron.edges[m - 4] = {local, nodes[m]};
             }
+          if (type == 11)
+            {
+              std::copy(nodes.begin(), nodes.begin() + 4, tetrahedron.corners.begin());
+              tetrahedra.push_back(tetrahedron);
+            }
+        }
+
+      // A curved boundary edge can invert a new element that is thin next
+      // to it; such elements keep gmsh's straight midpoints.
+      const auto position = [&](const unsigned int tag) {
+        const auto it = moved.find(tag);
+        return it != moved.end() ? it->second : node.at(tag);
+      };
+      for (bool reverted = true; reverted;)
+        {
+          reverted = false;
+          for (const auto &t : tetrahedra)
+            if (std::any_of(t.edges.begin(), t.edges.end(), [&](const auto &e) {
+                  return moved.count(e.second) > 0;
+                }) &&
+                jacobian_ratio(t, position) < 0.2)
+              for (const auto &e : t.edges)
+                reverted |= moved.erase(e.second) > 0;
         }
       for (const auto &[tag, p] : moved)
         {

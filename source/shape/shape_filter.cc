@@ -115,34 +115,58 @@ namespace softopt
     matrix.reinit(owned, owned, dsp, comm);
     mass_matrix.reinit(owned, owned, dsp, comm);
 
-    // The mass matrix of Omega_o (for dr_psi/dd) and |Omega_o|.
-    const QGaussSimplex<3> quadrature(2);
-    FEValues<3>            fe_values(design->get_initial_mapping(),
-                          dofs.get_fe(),
-                          quadrature,
-                          update_values | update_JxW_values);
-    const unsigned int     n = dofs.get_fe().n_dofs_per_cell();
-    FullMatrix<double>     cell_mass(n, n);
+    // The geometry of Omega_o at the quadrature points, then from it the
+    // mass matrix of Omega_o (for dr_psi/dd) and |Omega_o|.
+    const FiniteElement<3> &fe          = dofs.get_fe();
+    const FiniteElement<3> &scalar      = fe.base_element(0);
+    const unsigned int      n           = fe.n_dofs_per_cell();
+    const unsigned int      n_functions = scalar.n_dofs_per_cell();
+    const unsigned int      n_q         = quadrature().size();
+    component_function.resize(n);
+    std::vector<unsigned int> dof_of_function(n_functions);
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        component_function[i] = fe.system_to_component_index(i);
+        if (component_function[i].first == 0)
+          dof_of_function[component_function[i].second] = i;
+      }
+    shape_values.assign(n_q, std::vector<double>(n_functions));
+    for (unsigned int q = 0; q < n_q; ++q)
+      for (unsigned int b = 0; b < n_functions; ++b)
+        shape_values[q][b] = scalar.shape_value(b, quadrature().point(q));
+
+    FEValues<3> fe_values(design->get_initial_mapping(),
+                          fe,
+                          quadrature(),
+                          update_gradients | update_JxW_values);
+    FullMatrix<double>                   cell_mass(n, n);
     std::vector<types::global_dof_index> dof_indices(n);
+    cell_geometry.clear();
     volume = 0;
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
+          CellGeometry geometry{fe_values.get_JxW_values(),
+                                std::vector<Tensor<1, 3>>(n_q * n_functions)};
+          for (unsigned int q = 0; q < n_q; ++q)
+            for (unsigned int b = 0; b < n_functions; ++b)
+              geometry.grad[q * n_functions + b] =
+                fe_values.shape_grad(dof_of_function[b], q);
           cell_mass = 0;
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
+          for (unsigned int q = 0; q < n_q; ++q)
             {
-              volume += fe_values.JxW(q);
+              volume += geometry.JxW[q];
               for (unsigned int i = 0; i < n; ++i)
                 for (unsigned int j = 0; j < n; ++j)
-                  if (dofs.get_fe().system_to_component_index(i).first ==
-                      dofs.get_fe().system_to_component_index(j).first)
-                    cell_mass(i, j) += fe_values.shape_value(i, q) *
-                                       fe_values.shape_value(j, q) *
-                                       fe_values.JxW(q);
+                  if (component_function[i].first == component_function[j].first)
+                    cell_mass(i, j) += shape_values[q][component_function[i].second] *
+                                       shape_values[q][component_function[j].second] *
+                                       geometry.JxW[q];
             }
           cell->get_dof_indices(dof_indices);
           mass_matrix.add(dof_indices, cell_mass);
+          cell_geometry.push_back(std::move(geometry));
         }
     mass_matrix.compress(VectorOperation::add);
     volume = Utilities::MPI::sum(volume, comm);
@@ -154,58 +178,52 @@ namespace softopt
   ShapeFilter::Vector
   ShapeFilter::residual(const Vector &d, const Vector &psi, const bool with_tangent)
   {
-    const DoFHandler<3>     &dofs = design->get_dof_handler();
-    const FiniteElement<3>  &fe   = dofs.get_fe();
-    const Vector             psi_g = design->ghosted(psi), d_g = design->ghosted(d);
-    const QGaussSimplex<3>   quadrature(2);
-    FEValues<3>              fe_values(design->get_initial_mapping(),
-                          fe,
-                          quadrature,
-                          update_values | update_gradients | update_JxW_values);
-    const FEValuesExtractors::Vector  shape(0);
-    const FictitiousMaterial          material(K_psi, G_psi, k_psi);
-    const unsigned int                n = fe.n_dofs_per_cell();
-    FullMatrix<double>                cell_matrix(n, n);
-    dealii::Vector<double>            cell_residual(n);
+    const DoFHandler<3>   &dofs  = design->get_dof_handler();
+    const Vector           psi_g = design->ghosted(psi), d_g = design->ghosted(d);
+    const FictitiousMaterial material(K_psi, G_psi, k_psi);
+    const unsigned int     n           = component_function.size();
+    const unsigned int     n_functions = shape_values[0].size();
+    FullMatrix<double>     cell_matrix(n, n);
+    dealii::Vector<double> cell_residual(n);
     std::vector<types::global_dof_index> dof_indices(n);
-    std::vector<Tensor<2, 3>>         grad_psi(quadrature.size());
-    std::vector<Tensor<1, 3>>         psi_values(quadrature.size()),
-      d_values(quadrature.size());
-    std::vector<Tensor<2, 3>>         T(n);
-    std::vector<unsigned int>         component(n);
-    for (unsigned int i = 0; i < n; ++i)
-      component[i] = fe.system_to_component_index(i).first;
+    std::vector<double>                  psi_local(n), d_local(n);
+    std::vector<Tensor<2, 3>>            T(n);
 
     Vector r(dofs.locally_owned_dofs(), dofs.get_communicator());
     if (with_tangent)
       matrix = 0;
-    bool inverted = false;
+    bool         inverted = false;
+    unsigned int index    = 0;
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
-          fe_values[shape].get_function_gradients(psi_g, grad_psi);
-          fe_values[shape].get_function_values(psi_g, psi_values);
-          fe_values[shape].get_function_values(d_g, d_values);
+          const CellGeometry &geometry = cell_geometry[index++];
+          cell->get_dof_indices(dof_indices);
+          psi_g.extract_subvector_to(dof_indices.begin(), dof_indices.end(), psi_local.begin());
+          d_g.extract_subvector_to(dof_indices.begin(), dof_indices.end(), d_local.begin());
           cell_matrix   = 0;
           cell_residual = 0;
-          for (unsigned int q = 0; q < quadrature.size(); ++q)
+          for (unsigned int q = 0; q < geometry.JxW.size(); ++q)
             {
-              const Tensor<2, 3> F = unit_symmetric_tensor<3>() + grad_psi[q];
+              const Tensor<2, 3> F =
+                unit_symmetric_tensor<3>() + gradient(geometry, q, psi_local);
               if (!(determinant(F) > 0))
                 {
                   inverted = true;
                   break;
                 }
               // 1/2 from the potential (Eq. PDEpot01).
-              const Tensor<2, 3> P   = 0.5 * material.first_piola(F);
-              const Tensor<1, 3> gap = (psi_values[q] - d_values[q]) / volume;
-              const double       JxW = fe_values.JxW(q);
+              const Tensor<2, 3> P = 0.5 * material.first_piola(F);
+              const Tensor<1, 3> gap =
+                (value(q, psi_local) - value(q, d_local)) / volume;
+              const double  JxW  = geometry.JxW[q];
+              const auto   *grad = &geometry.grad[q * n_functions];
+              const double *N    = shape_values[q].data();
               for (unsigned int i = 0; i < n; ++i)
-                cell_residual(i) +=
-                  (P[component[i]] * fe_values.shape_grad(i, q) +
-                   gap[component[i]] * fe_values.shape_value(i, q)) *
-                  JxW;
+                {
+                  const auto [c, b] = component_function[i];
+                  cell_residual(i) += (P[c] * grad[b] + gap[c] * N[b]) * JxW;
+                }
               if (!with_tangent)
                 continue;
               // grad N_i : A : grad N_j through T_j = A : (e_{c_j} (x) g_j),
@@ -213,25 +231,23 @@ namespace softopt
               const Tensor<4, 3> A = 0.5 * material.tangent(F);
               for (unsigned int j = 0; j < n; ++j)
                 {
-                  const Tensor<1, 3> &g_j = fe_values.shape_grad(j, q);
+                  const auto [c, b] = component_function[j];
                   for (unsigned int k = 0; k < 3; ++k)
                     for (unsigned int l = 0; l < 3; ++l)
-                      T[j][k][l] = A[k][l][component[j]] * g_j;
+                      T[j][k][l] = A[k][l][c] * grad[b];
                 }
               for (unsigned int i = 0; i < n; ++i)
                 {
-                  const Tensor<1, 3> &g_i = fe_values.shape_grad(i, q);
-                  const double N_i = fe_values.shape_value(i, q) / volume;
+                  const auto [c_i, b_i] = component_function[i];
+                  const double N_i      = N[b_i] / volume;
                   for (unsigned int j = 0; j < n; ++j)
-                    cell_matrix(i, j) +=
-                      (T[j][component[i]] * g_i +
-                       (component[i] == component[j] ?
-                          N_i * fe_values.shape_value(j, q) :
-                          0.)) *
-                      JxW;
+                    {
+                      const auto [c_j, b_j] = component_function[j];
+                      cell_matrix(i, j) +=
+                        (T[j][c_i] * grad[b_i] + (c_i == c_j ? N_i * N[b_j] : 0.)) * JxW;
+                    }
                 }
             }
-          cell->get_dof_indices(dof_indices);
           if (with_tangent)
             constraints.distribute_local_to_global(
               cell_matrix, cell_residual, dof_indices, matrix, r);
@@ -365,38 +381,35 @@ namespace softopt
   ShapeFilter::Result
   ShapeFilter::mesh_health(const Vector &psi) const
   {
-    const DoFHandler<3>    &dofs  = design->get_dof_handler();
-    const FiniteElement<3> &fe    = dofs.get_fe();
-    const Vector            psi_g = design->ghosted(psi);
-    Vector                  X     = design->initial_coordinates();
+    const DoFHandler<3> &dofs  = design->get_dof_handler();
+    const Vector         psi_g = design->ghosted(psi);
+    Vector               X     = design->initial_coordinates();
     X += psi;
-    const Vector           X_g = design->ghosted(X);
-    const QGaussSimplex<3> quadrature(2);
-    FEValues<3>            fe_values(design->get_initial_mapping(),
-                          fe,
-                          quadrature,
-                          update_gradients);
-    const FEValuesExtractors::Vector     shape(0);
-    std::vector<Tensor<2, 3>>            grad_psi(quadrature.size());
-    std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
+    const Vector                         X_g = design->ghosted(X);
+    const unsigned int                   n   = component_function.size();
+    std::vector<types::global_dof_index> dof_indices(n);
+    std::vector<double>                  psi_local(n);
     Result                               result;
     bool                                 has_cells = false;
+    unsigned int                         index     = 0;
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
-          fe_values[shape].get_function_gradients(psi_g, grad_psi);
-          for (const auto &g : grad_psi)
+          const CellGeometry &geometry = cell_geometry[index++];
+          cell->get_dof_indices(dof_indices);
+          psi_g.extract_subvector_to(dof_indices.begin(), dof_indices.end(), psi_local.begin());
+          for (unsigned int q = 0; q < geometry.JxW.size(); ++q)
             result.min_J_psi =
-              std::min(result.min_J_psi, determinant(unit_symmetric_tensor<3>() + g));
+              std::min(result.min_J_psi,
+                       determinant(unit_symmetric_tensor<3>() +
+                                   gradient(geometry, q, psi_local)));
 
           // Mean ratio of the tetrahedron through the corner nodes of X:
           // 12 (3 V)^(2/3) / sum of squared edge lengths, 1 if equilateral.
-          cell->get_dof_indices(dof_indices);
           std::array<Point<3>, 4> p;
-          for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+          for (unsigned int i = 0; i < n; ++i)
             {
-              const auto [c, node] = fe.system_to_component_index(i);
+              const auto [c, node] = component_function[i];
               if (node < 4)
                 p[node][c] = X_g(dof_indices[i]);
             }
@@ -426,6 +439,46 @@ namespace softopt
     MPI_Allreduce(MPI_IN_PLACE, &worst, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm);
     result.worst_quality = std::min(worst.quality, 1.);
     MPI_Bcast(&result.worst_element[0], 3, MPI_DOUBLE, worst.rank, comm);
+    return result;
+  }
+
+
+
+  const QGaussSimplex<3> &
+  ShapeFilter::quadrature()
+  {
+    static const QGaussSimplex<3> quadrature(2);
+    return quadrature;
+  }
+
+
+
+  Tensor<2, 3>
+  ShapeFilter::gradient(const CellGeometry        &cell,
+                        const unsigned int         q,
+                        const std::vector<double> &v) const
+  {
+    const unsigned int n_functions = shape_values[q].size();
+    Tensor<2, 3>       result;
+    for (unsigned int i = 0; i < v.size(); ++i)
+      {
+        const auto [c, b] = component_function[i];
+        result[c] += v[i] * cell.grad[q * n_functions + b];
+      }
+    return result;
+  }
+
+
+
+  Tensor<1, 3>
+  ShapeFilter::value(const unsigned int q, const std::vector<double> &v) const
+  {
+    Tensor<1, 3> result;
+    for (unsigned int i = 0; i < v.size(); ++i)
+      {
+        const auto [c, b] = component_function[i];
+        result[c] += v[i] * shape_values[q][b];
+      }
     return result;
   }
 
