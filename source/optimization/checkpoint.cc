@@ -130,7 +130,12 @@ namespace softopt
         }
       MPI_Barrier(comm);
       if (root && !mesh_file.empty())
-        std::ofstream(next + "/mesh") << mesh_file << '\n';
+        {
+          // By its name: it lives in the output directory, which may move.
+          std::ofstream out(next + "/mesh");
+          out << std::filesystem::path(mesh_file).filename().string() << '\n';
+          AssertThrow(out, ExcMessage("Writing " + next + "/mesh failed."));
+        }
       {
         const auto    file = rank_file(next, comm);
         std::ofstream out(file, std::ios::binary);
@@ -178,10 +183,10 @@ namespace softopt
       const auto dir = std::filesystem::exists(directory(output_directory)) ?
                          directory(output_directory) :
                          directory(output_directory) + ".old";
-      std::string   file;
+      std::string   name;
       std::ifstream in(dir + "/mesh");
-      std::getline(in, file);
-      return file;
+      std::getline(in, name);
+      return name.empty() ? name : output_directory + "/" + name;
     }
 
 

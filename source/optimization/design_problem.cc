@@ -12,7 +12,6 @@ namespace softopt
   DesignProblem::DesignProblem(Settings &settings)
     : settings(settings)
     , comm(MPI_COMM_WORLD)
-    , triangulation(comm)
     , timer_output(comm, std::cout, TimerOutput::never, TimerOutput::wall_times)
   {
     build();
@@ -30,9 +29,10 @@ namespace softopt
   void
   DesignProblem::build()
   {
-    settings.geometry.create_triangulation(triangulation);
-    design   = std::make_unique<DesignConfiguration>(triangulation, settings.geometry);
-    problem  = std::make_unique<HyperelasticProblem>(triangulation,
+    triangulation = std::make_unique<parallel::fullydistributed::Triangulation<3>>(comm);
+    settings.geometry.create_triangulation(*triangulation);
+    design   = std::make_unique<DesignConfiguration>(*triangulation, settings.geometry);
+    problem  = std::make_unique<HyperelasticProblem>(*triangulation,
                                                     design->get_mapping(),
                                                     settings.geometry,
                                                     *settings.material,
@@ -40,7 +40,7 @@ namespace softopt
     problem->setup_system();
     problem->set_linear_solver(settings.linear_solver);
     settings.shape_filter.setup(*design, settings.geometry);
-    psi = design->create_vector();
+    psi.reinit(design->create_vector()); // the new mesh's layout
   }
 
 
@@ -222,11 +222,30 @@ namespace softopt
   DesignProblem::remesh(const std::string &msh_file)
   {
     remesh_design(*design, msh_file);
-    settings.geometry.mesh_file = msh_file;
-    problem.reset(); // before the DoFs and the mesh it lives on
-    design.reset();
-    triangulation.clear();
-    build();
+    // Built beside the old mesh, which stays if anything fails.
+    auto old_triangulation = std::move(triangulation);
+    auto old_design        = std::move(design);
+    auto old_problem       = std::move(problem);
+    const Vector      old_psi  = psi;
+    const std::string old_file = settings.geometry.mesh_file;
+    try
+      {
+        settings.geometry.mesh_file = msh_file;
+        build();
+      }
+    catch (...)
+      {
+        problem       = std::move(old_problem);
+        design        = std::move(old_design);
+        triangulation = std::move(old_triangulation);
+        settings.geometry.mesh_file = old_file;
+        psi.reinit(old_psi);
+        psi = old_psi;
+        settings.shape_filter.setup(*design, settings.geometry);
+        throw;
+      }
+    old_problem.reset(); // before the DoFs and the mesh it lives on
+    old_design.reset();
     // Nothing carries over: the next evaluate() follows the path from zero.
     states.clear();
     predictor          = SecantPredictor();

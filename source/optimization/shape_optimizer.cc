@@ -137,8 +137,8 @@ namespace softopt
             return before;
           }
         mesh_file = file;
-        d         = problem.create_design_vector();
-        accepted  = d;
+        d.reinit(problem.create_design_vector()); // the new mesh's layout, zero
+        accepted.reinit(d);
         reset_mma();
         before.reset();
         pcout << "  iteration " << k << ": worst element quality " << quality
@@ -176,7 +176,11 @@ namespace softopt
             message << e.what();
           const std::string reason = Utilities::trim(message.str());
           undo_mesh_update(before_update);
-          if (!may_halve || halving == settings.optimization.step_halvings)
+          Vector step = d;
+          step -= accepted;
+          // After a new mesh d = accepted = 0: nothing to halve.
+          if (!may_halve || halving == settings.optimization.step_halvings ||
+              step.linfty_norm() == 0)
             return "the design of iteration " + std::to_string(k) +
                    " was refused: " + reason +
                    " The last accepted design is that of iteration " +

@@ -171,6 +171,26 @@ namespace softopt
     }
 
     /**
+     * Whether every midside node of @p t is nearer to the straight midpoint
+     * of its own edge than to any other's: split_quadratic_gmsh_mesh()
+     * assigns midside nodes to edges that way when it reads the file.
+     */
+    template <typename Position>
+    bool
+    matches_edges(const Tetrahedron &t, const Position &position)
+    {
+      for (const auto &[own, tag] : t.edges)
+        for (const auto &[other, other_tag] : t.edges)
+          if (other != own &&
+              position(tag).distance((position(t.corners[other.first]) +
+                                      position(t.corners[other.second])) / 2.) <=
+                position(tag).distance((position(t.corners[own.first]) +
+                                        position(t.corners[own.second])) / 2.))
+            return false;
+      return true;
+    }
+
+    /**
      * Moves the midside nodes of the boundary edges in gmsh's quadratic
      * @p file (format 2.2), which gmsh put at the straight edges' midpoints,
      * to the design's curved @p midpoints, so the new mesh has the design's
@@ -178,7 +198,8 @@ namespace softopt
      * position (gmsh renumbers them); a midside node belongs to the edge
      * whose straight midpoint is nearest (as in split_quadratic_gmsh_mesh).
      * Where that would make an element's Jacobian vary by more than a
-     * factor 5 (or invert it), its edges stay straight.
+     * factor 5 (or invert it), or put a midside node nearer to another
+     * edge's midpoint than to its own, the element's edges stay straight.
      */
     void
     restore_curved_midpoints(const std::string &file, const Surface &surface)
@@ -274,10 +295,13 @@ namespace softopt
             if (std::any_of(t.edges.begin(), t.edges.end(), [&](const auto &e) {
                   return moved.count(e.second) > 0;
                 }) &&
-                jacobian_ratio(t, position) < 0.2)
+                (jacobian_ratio(t, position) < 0.2 || !matches_edges(t, position)))
               for (const auto &e : t.edges)
                 reverted |= moved.erase(e.second) > 0;
         }
+      AssertThrow(!tetrahedra.empty(),
+                  ExcMessage("gmsh wrote no tetrahedra into " + file +
+                             " (it could not fill the design's boundary)."));
       for (const auto &[tag, p] : moved)
         {
           std::ostringstream line;
@@ -331,6 +355,7 @@ namespace softopt
               << "Physical Volume(1) = {1};\n";
           geo.close();
           AssertThrow(geo, ExcMessage("Cannot write " + stem + ".geo"));
+          std::filesystem::remove(msh_file); // none of an earlier run
           const std::string log =
             run_gmsh("-3 -order 2 -format msh22 \"" + stem + ".geo\"", msh_file);
           if (!log.empty())

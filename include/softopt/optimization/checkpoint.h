@@ -47,7 +47,8 @@ namespace softopt
 
     /** The mesh file the checkpoint in @p output_directory was written on,
      * if the run remeshed the design ("" otherwise: the parameter file's
-     * mesh). A restart builds its mesh from it. */
+     * mesh); save() stores its name, the file being in the output
+     * directory. A restart builds its mesh from it. */
     std::string
     mesh_file(const std::string &output_directory);
 

@@ -78,7 +78,8 @@ namespace softopt
     /** A new mesh of the current design X = X_o + psi (remesh_design()),
      * written to @p msh_file and read from there, with X_o the new mesh,
      * psi = 0 and no states (the next evaluate() follows the path from
-     * zero). The caller starts d and MMA afresh. */
+     * zero). The caller starts d and MMA afresh. If it throws, the old
+     * mesh and design stay in place. */
     void
     remesh(const std::string &msh_file);
 
@@ -176,7 +177,7 @@ namespace softopt
 
     Settings                                     &settings;
     MPI_Comm                                      comm;
-    parallel::fullydistributed::Triangulation<3>  triangulation;
+    std::unique_ptr<parallel::fullydistributed::Triangulation<3>> triangulation;
     std::unique_ptr<DesignConfiguration>          design;
     std::unique_ptr<HyperelasticProblem>          problem;
     std::vector<const Functional *>               functionals_;
