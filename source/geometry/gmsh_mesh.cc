@@ -2,6 +2,7 @@
 
 #include <softopt/geometry/gmsh_mesh.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdlib>
 #include <filesystem>
@@ -15,16 +16,9 @@
 namespace softopt
 {
   bool
-  EdgeMidpoints::Less::operator()(const std::pair<Point<3>, Point<3>> &x,
-                                  const std::pair<Point<3>, Point<3>> &y) const
+  PointLess::operator()(const Point<3> &a, const Point<3> &b) const
   {
-    for (unsigned int d = 0; d < 3; ++d)
-      if (x.first[d] != y.first[d])
-        return x.first[d] < y.first[d];
-    for (unsigned int d = 0; d < 3; ++d)
-      if (x.second[d] != y.second[d])
-        return x.second[d] < y.second[d];
-    return false;
+    return std::lexicographical_compare(&a[0], &a[0] + 3, &b[0], &b[0] + 3);
   }
 
 
@@ -32,9 +26,7 @@ namespace softopt
   std::pair<Point<3>, Point<3>>
   EdgeMidpoints::key(const Point<3> &a, const Point<3> &b)
   {
-    const bool a_first =
-      std::lexicographical_compare(&a[0], &a[0] + 3, &b[0], &b[0] + 3);
-    return a_first ? std::make_pair(a, b) : std::make_pair(b, a);
+    return PointLess()(a, b) ? std::make_pair(a, b) : std::make_pair(b, a);
   }
 
 
@@ -64,9 +56,16 @@ namespace softopt
 
 
 
-  EdgeMidpoints
-  split_quadratic_gmsh_mesh(const std::string &file,
-                            const std::string &linear_file)
+  unsigned int
+  GmshMesh::Element::n_corners() const
+  {
+    return (type == 4 || type == 11) ? 4 : 3;
+  }
+
+
+
+  GmshMesh
+  read_gmsh_mesh(const std::string &file)
   {
     std::ifstream in(file);
     AssertThrow(in.good(), ExcMessage("Cannot read the mesh <" + file + ">."));
@@ -82,19 +81,11 @@ namespace softopt
     if (line != "$MeshFormat" || version < 2 || version >= 3 || binary != 0)
       fail("is not in gmsh's format 2.2 (ASCII).");
 
-    std::unordered_map<long, Point<3>> nodes;
-    struct Element
-    {
-      int               type;
-      std::vector<long> tags;
-      std::vector<long> nodes;
-    };
-    std::vector<Element> elements;
     // The node counts of the element types softopt accepts, and of those it
     // skips (points, lines); anything else is refused.
     const std::map<int, unsigned int> n_nodes = {
       {2, 3}, {4, 4}, {9, 6}, {11, 10}, {15, 1}, {1, 2}, {8, 3}};
-
+    GmshMesh mesh;
     while (in >> line)
       if (line == "$Nodes")
         {
@@ -105,7 +96,7 @@ namespace softopt
               long     id;
               Point<3> p;
               in >> id >> p[0] >> p[1] >> p[2];
-              nodes[id] = p;
+              mesh.nodes[id] = p;
             }
         }
       else if (line == "$Elements")
@@ -114,9 +105,9 @@ namespace softopt
           in >> n;
           for (long i = 0; i < n; ++i)
             {
-              long    id;
-              Element e;
-              int     n_tags;
+              long              id;
+              GmshMesh::Element e;
+              int               n_tags;
               in >> id >> e.type >> n_tags;
               e.tags.resize(n_tags);
               for (auto &t : e.tags)
@@ -130,76 +121,111 @@ namespace softopt
               for (auto &v : e.nodes)
                 in >> v;
               if (e.type == 2 || e.type == 4 || e.type == 9 || e.type == 11)
-                elements.push_back(std::move(e));
+                mesh.elements.push_back(std::move(e));
             }
         }
     if (!in.eof())
       fail("could not be parsed.");
+    return mesh;
+  }
 
-    // Corner nodes are renumbered from 1 in the linear mesh; midside nodes
-    // are matched to the edge whose straight midpoint is nearest (robust
-    // against the node ordering of the element type).
-    std::map<long, long> corner_number;
-    EdgeMidpoints        midpoints;
-    unsigned int         n_tetrahedra = 0;
-    for (const auto &e : elements)
-      {
-        const unsigned int n_corners = (e.type == 4 || e.type == 11) ? 4 : 3;
-        n_tetrahedra += (n_corners == 4);
-        for (unsigned int v = 0; v < n_corners; ++v)
-          corner_number.emplace(e.nodes[v], 0);
-        for (unsigned int m = n_corners; m < e.nodes.size(); ++m)
-          {
-            const Point<3> &x         = nodes.at(e.nodes[m]);
-            double          best      = std::numeric_limits<double>::max();
-            std::array<unsigned int, 2> edge{{0, 0}};
-            for (unsigned int a = 0; a < n_corners; ++a)
-              for (unsigned int b = a + 1; b < n_corners; ++b)
-                {
-                  const double d = x.distance(
-                    (nodes.at(e.nodes[a]) + nodes.at(e.nodes[b])) / 2.);
-                  if (d < best)
-                    {
-                      best = d;
-                      edge = {{a, b}};
-                    }
-                }
-            midpoints.add(nodes.at(e.nodes[edge[0]]),
-                          nodes.at(e.nodes[edge[1]]),
-                          x);
-          }
-      }
-    if (n_tetrahedra == 0)
-      fail("holds no tetrahedra (a gmsh file without a Physical Volume "
-           "holds none).");
 
-    std::ofstream out(linear_file);
+
+  void
+  write_gmsh_mesh(const GmshMesh &mesh, const std::string &file)
+  {
+    std::ofstream out(file);
     out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
-        << corner_number.size() << "\n"
+        << mesh.nodes.size() << "\n"
         << std::setprecision(17);
+    for (const auto &[id, p] : mesh.nodes)
+      out << id << " " << p[0] << " " << p[1] << " " << p[2] << "\n";
+    out << "$EndNodes\n$Elements\n" << mesh.elements.size() << "\n";
     long number = 0;
-    for (auto &[id, new_id] : corner_number)
+    for (const auto &e : mesh.elements)
       {
-        new_id          = ++number;
-        const auto &p   = nodes.at(id);
-        out << new_id << " " << p[0] << " " << p[1] << " " << p[2] << "\n";
-      }
-    out << "$EndNodes\n$Elements\n" << elements.size() << "\n";
-    number = 0;
-    for (const auto &e : elements)
-      {
-        const bool tet = (e.type == 4 || e.type == 11);
-        out << ++number << " " << (tet ? 4 : 2) << " " << e.tags.size();
+        out << ++number << " " << e.type << " " << e.tags.size();
         for (const auto t : e.tags)
           out << " " << t;
-        for (unsigned int v = 0; v < (tet ? 4u : 3u); ++v)
-          out << " " << corner_number.at(e.nodes[v]);
+        for (const auto v : e.nodes)
+          out << " " << v;
         out << "\n";
       }
     out << "$EndElements\n";
-    AssertThrow(out.good(),
-                ExcMessage("Cannot write the temporary mesh <" + linear_file +
-                           ">."));
+    AssertThrow(out.good(), ExcMessage("Cannot write the mesh <" + file + ">."));
+  }
+
+
+
+  std::pair<unsigned int, unsigned int>
+  nearest_edge(const std::vector<Point<3>> &corners, const Point<3> &m)
+  {
+    double                                best = std::numeric_limits<double>::max();
+    std::pair<unsigned int, unsigned int> edge{0, 0};
+    for (unsigned int a = 0; a < corners.size(); ++a)
+      for (unsigned int b = a + 1; b < corners.size(); ++b)
+        if (const double d = m.distance((corners[a] + corners[b]) / 2.); d < best)
+          {
+            best = d;
+            edge = {a, b};
+          }
+    return edge;
+  }
+
+
+
+  EdgeMidpoints
+  split_quadratic_gmsh_mesh(const std::string &file,
+                            const std::string &linear_file)
+  {
+    const GmshMesh mesh = read_gmsh_mesh(file);
+
+    // The linear mesh: corner nodes, renumbered from 1; the midside nodes
+    // are recorded by their edge.
+    GmshMesh      linear;
+    EdgeMidpoints midpoints;
+    unsigned int  n_tetrahedra = 0;
+    for (const auto &e : mesh.elements)
+      {
+        const unsigned int    n_corners = e.n_corners();
+        std::vector<Point<3>> corners;
+        for (unsigned int v = 0; v < n_corners; ++v)
+          {
+            corners.push_back(mesh.nodes.at(e.nodes[v]));
+            linear.nodes.emplace(e.nodes[v], Point<3>());
+          }
+        for (unsigned int m = n_corners; m < e.nodes.size(); ++m)
+          {
+            const Point<3> &x = mesh.nodes.at(e.nodes[m]);
+            const auto [a, b] = nearest_edge(corners, x);
+            midpoints.add(corners[a], corners[b], x);
+          }
+        n_tetrahedra += (n_corners == 4);
+      }
+    AssertThrow(n_tetrahedra > 0,
+                ExcMessage("The mesh <" + file +
+                           "> holds no tetrahedra (a gmsh file without a "
+                           "Physical Volume holds none)."));
+
+    std::map<long, long> number;
+    {
+      std::map<long, Point<3>> renumbered;
+      for (const auto &[id, p] : linear.nodes)
+        {
+          const long n   = renumbered.size() + 1;
+          number[id]     = n;
+          renumbered[n]  = mesh.nodes.at(id);
+        }
+      linear.nodes = std::move(renumbered);
+    }
+    for (const auto &e : mesh.elements)
+      {
+        GmshMesh::Element corner_element{e.n_corners() == 4 ? 4 : 2, e.tags, {}};
+        for (unsigned int v = 0; v < e.n_corners(); ++v)
+          corner_element.nodes.push_back(number.at(e.nodes[v]));
+        linear.elements.push_back(std::move(corner_element));
+      }
+    write_gmsh_mesh(linear, linear_file);
     return midpoints;
   }
 

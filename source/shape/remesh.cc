@@ -8,27 +8,13 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
-#include <iomanip>
 #include <limits>
-#include <sstream>
 #include <map>
 
 namespace softopt
 {
   namespace
   {
-    /** Exact lexicographic order: the faces of neighbouring cells read a
-     * shared node from the same DoFs, so equal nodes are equal bit for
-     * bit. */
-    struct Less
-    {
-      bool
-      operator()(const Point<3> &a, const Point<3> &b) const
-      {
-        return std::lexicographical_compare(&a[0], &a[0] + 3, &b[0], &b[0] + 3);
-      }
-    };
-
     /** Lexicographic order up to @p tolerance: gmsh writes the corners it
      * read back with 16 digits, so they may differ in the last bit. Nodes
      * are much farther apart than the tolerance. */
@@ -69,7 +55,9 @@ namespace softopt
      * midside node of every boundary edge. */
     struct Surface
     {
-      std::map<Point<3>, unsigned int, Less> number;
+      /** Exact: the faces of neighbouring cells read a shared node from
+       * the same DoFs, so equal nodes are equal bit for bit. */
+      std::map<Point<3>, unsigned int, PointLess> number;
       std::map<Edge, Point<3>>               midpoints;
     };
 
@@ -87,15 +75,11 @@ namespace softopt
         for (std::size_t t = 0; t < part.size(); t += face_size)
           for (unsigned int v = 0; v < 3; ++v)
             number.emplace(point(part, t + 3 * v), 0);
-      std::ofstream out(file);
-      out << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n"
-          << number.size() << "\n"
-          << std::setprecision(17);
-      unsigned int n = 0;
+      GmshMesh mesh;
       for (auto &[p, i] : number)
         {
-          i = ++n;
-          out << i << " " << p[0] << " " << p[1] << " " << p[2] << "\n";
+          i = mesh.nodes.size() + 1;
+          mesh.nodes[i] = p;
         }
       // The triangles as (boundary id, corners), sorted: the same file
       // (and so the same mesh) on any number of MPI ranks.
@@ -115,23 +99,19 @@ namespace softopt
                 point(part, t + 9 + 3 * k);
           }
       std::sort(triangles.begin(), triangles.end());
-      out << "$EndNodes\n$Elements\n" << triangles.size() << "\n";
-      n = 0;
       for (const auto &[id, a, b, c] : triangles)
         // Physical and elementary tag: the boundary id.
-        out << ++n << " 2 2 " << id << " " << id << " " << a << " " << b
-            << " " << c << "\n";
-      out << "$EndElements\n";
-      AssertThrow(out, ExcMessage("Cannot write " + file));
+        mesh.elements.push_back({2, {id, id}, {a, b, c}});
+      write_gmsh_mesh(mesh, file);
       return surface;
     }
 
-    /** A quadratic tetrahedron of gmsh's mesh: corner tags, and per edge
-     * its corners (local) and midside node's tag. */
+    /** A quadratic tetrahedron of gmsh's mesh: its corner tags and, per
+     * edge, the edge's corners (local) and the midside node's tag. */
     struct Tetrahedron
     {
-      std::array<unsigned int, 4>                                corners;
-      std::array<std::pair<Edge, unsigned int>, 6>               edges;
+      std::array<long, 4>                  corners;
+      std::array<std::pair<Edge, long>, 6> edges;
     };
 
     /**
@@ -171,35 +151,32 @@ namespace softopt
     }
 
     /**
-     * Whether every midside node of @p t is nearer to the straight midpoint
-     * of its own edge than to any other's: split_quadratic_gmsh_mesh()
-     * assigns midside nodes to edges that way when it reads the file.
+     * Whether every midside node of @p t is nearest to the straight midpoint
+     * of its own edge, as split_quadratic_gmsh_mesh() assigns midside nodes
+     * when it reads the file back.
      */
     template <typename Position>
     bool
     matches_edges(const Tetrahedron &t, const Position &position)
     {
+      std::vector<Point<3>> corners;
+      for (const long c : t.corners)
+        corners.push_back(position(c));
       for (const auto &[own, tag] : t.edges)
-        for (const auto &[other, other_tag] : t.edges)
-          if (other != own &&
-              position(tag).distance((position(t.corners[other.first]) +
-                                      position(t.corners[other.second])) / 2.) <=
-                position(tag).distance((position(t.corners[own.first]) +
-                                        position(t.corners[own.second])) / 2.))
-            return false;
+        if (nearest_edge(corners, position(tag)) != own)
+          return false;
       return true;
     }
 
     /**
      * Moves the midside nodes of the boundary edges in gmsh's quadratic
-     * @p file (format 2.2), which gmsh put at the straight edges' midpoints,
-     * to the design's curved @p midpoints, so the new mesh has the design's
-     * P2 surface. gmsh's corner nodes are found among the boundary's by
-     * position (gmsh renumbers them); a midside node belongs to the edge
-     * whose straight midpoint is nearest (as in split_quadratic_gmsh_mesh).
-     * Where that would make an element's Jacobian vary by more than a
-     * factor 5 (or invert it), or put a midside node nearer to another
-     * edge's midpoint than to its own, the element's edges stay straight.
+     * @p file, which gmsh put at the straight edges' midpoints, to the
+     * design's curved ones, so the new mesh has the design's P2 surface.
+     * gmsh's corner nodes are found among the boundary's by position (gmsh
+     * renumbers them). Where that would make an element's Jacobian vary by
+     * more than a factor 5 (or invert it), or put a midside node nearer to
+     * another edge's midpoint than to its own, the element's edges stay
+     * straight.
      */
     void
     restore_curved_midpoints(const std::string &file, const Surface &surface)
@@ -207,86 +184,52 @@ namespace softopt
       double size = 1;
       for (const auto &[p, n] : surface.number)
         size = std::max(size, p.norm());
-      std::map<Point<3>, unsigned int, NearlyLess> number(
+      const std::map<Point<3>, unsigned int, NearlyLess> number(
         surface.number.begin(), surface.number.end(), NearlyLess{1e-12 * size});
-      std::vector<std::string> lines;
-      {
-        std::ifstream in(file);
-        for (std::string line; std::getline(in, line);)
-          lines.push_back(line);
-      }
-      const auto section = [&](const std::string &name) {
-        const auto it = std::find(lines.begin(), lines.end(), name);
-        AssertThrow(it != lines.end(),
-                    ExcMessage("gmsh wrote " + file + " without " + name));
-        return std::size_t(it - lines.begin()) + 2; // after the count
-      };
-      std::map<unsigned int, std::size_t> line_of_node;
-      std::map<unsigned int, Point<3>>    node;
+      GmshMesh mesh = read_gmsh_mesh(file);
       // gmsh's tag -> the boundary's number (0: an interior node).
-      std::map<unsigned int, unsigned int> boundary_number;
-      for (std::size_t l = section("$Nodes"); lines[l] != "$EndNodes"; ++l)
+      std::map<long, unsigned int> boundary_number;
+      for (const auto &[tag, p] : mesh.nodes)
         {
-          std::istringstream in(lines[l]);
-          unsigned int       tag;
-          Point<3>           p;
-          in >> tag >> p[0] >> p[1] >> p[2];
-          line_of_node[tag] = l;
-          node[tag]         = p;
-          const auto it     = number.find(p);
+          const auto it        = number.find(p);
           boundary_number[tag] = it != number.end() ? it->second : 0;
         }
-      std::map<unsigned int, Point<3>> moved;
-      std::vector<Tetrahedron>         tetrahedra;
-      for (std::size_t l = section("$Elements"); lines[l] != "$EndElements"; ++l)
+
+      std::map<long, Point<3>> moved;
+      std::vector<Tetrahedron> tetrahedra;
+      for (const auto &e : mesh.elements)
         {
-          std::istringstream in(lines[l]);
-          unsigned int       tag, type, n_tags;
-          in >> tag >> type >> n_tags;
-          if (type != 9 && type != 11) // 6-node triangle, 10-node tetrahedron
-            continue;
-          for (unsigned int i = 0; i < n_tags; ++i)
-            in >> tag;
-          std::vector<unsigned int> nodes(type == 9 ? 6 : 10);
-          for (auto &n : nodes)
-            in >> n;
-          const unsigned int n_corners = type == 9 ? 3 : 4;
-          Tetrahedron        tetrahedron;
-          for (unsigned int m = n_corners; m < nodes.size(); ++m)
+          std::vector<Point<3>> corners;
+          for (unsigned int v = 0; v < e.n_corners(); ++v)
+            corners.push_back(mesh.nodes.at(e.nodes[v]));
+          Tetrahedron t;
+          for (unsigned int m = e.n_corners(); m < e.nodes.size(); ++m)
             {
-              double best = std::numeric_limits<double>::max();
-              Edge   nearest, local;
-              for (unsigned int a = 0; a < n_corners; ++a)
-                for (unsigned int b = a + 1; b < n_corners; ++b)
-                  {
-                    const double distance = node.at(nodes[m]).distance(
-                      (node.at(nodes[a]) + node.at(nodes[b])) / 2.);
-                    if (distance < best)
-                      {
-                        best    = distance;
-                        local   = {a, b};
-                        nearest = edge(boundary_number.at(nodes[a]),
-                                       boundary_number.at(nodes[b]));
-                      }
-                  }
-              if (const auto it = surface.midpoints.find(nearest);
-                  nearest.first > 0 && it != surface.midpoints.end())
-                moved[nodes[m]] = it->second;
-              if (type == 11)
-                tetrahedron.edges[m - 4] = {local, nodes[m]};
+              const Edge local = nearest_edge(corners, mesh.nodes.at(e.nodes[m]));
+              const Edge boundary_edge =
+                edge(boundary_number.at(e.nodes[local.first]),
+                     boundary_number.at(e.nodes[local.second]));
+              if (const auto it = surface.midpoints.find(boundary_edge);
+                  boundary_edge.first > 0 && it != surface.midpoints.end())
+                moved[e.nodes[m]] = it->second;
+              if (e.type == 11)
+                t.edges[m - 4] = {local, e.nodes[m]};
             }
-          if (type == 11)
+          if (e.type == 11)
             {
-              std::copy(nodes.begin(), nodes.begin() + 4, tetrahedron.corners.begin());
-              tetrahedra.push_back(tetrahedron);
+              std::copy(e.nodes.begin(), e.nodes.begin() + 4, t.corners.begin());
+              tetrahedra.push_back(t);
             }
         }
+      AssertThrow(!tetrahedra.empty(),
+                  ExcMessage("gmsh wrote no quadratic tetrahedra into " + file +
+                             " (it could not fill the design's boundary)."));
 
       // A curved boundary edge can invert a new element that is thin next
       // to it; such elements keep gmsh's straight midpoints.
-      const auto position = [&](const unsigned int tag) {
+      const auto position = [&](const long tag) {
         const auto it = moved.find(tag);
-        return it != moved.end() ? it->second : node.at(tag);
+        return it != moved.end() ? it->second : mesh.nodes.at(tag);
       };
       for (bool reverted = true; reverted;)
         {
@@ -299,20 +242,9 @@ namespace softopt
               for (const auto &e : t.edges)
                 reverted |= moved.erase(e.second) > 0;
         }
-      AssertThrow(!tetrahedra.empty(),
-                  ExcMessage("gmsh wrote no tetrahedra into " + file +
-                             " (it could not fill the design's boundary)."));
       for (const auto &[tag, p] : moved)
-        {
-          std::ostringstream line;
-          line << std::setprecision(17) << tag << " " << p[0] << " " << p[1]
-               << " " << p[2];
-          lines[line_of_node.at(tag)] = line.str();
-        }
-      std::ofstream out(file);
-      for (const auto &line : lines)
-        out << line << '\n';
-      AssertThrow(out, ExcMessage("Cannot write " + file));
+        mesh.nodes[tag] = p;
+      write_gmsh_mesh(mesh, file);
     }
   } // namespace
 

@@ -6,10 +6,61 @@
 #include <map>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace softopt
 {
   using namespace dealii;
+
+  /** Exact lexicographic order of points (for maps keyed by nodes). */
+  struct PointLess
+  {
+    bool
+    operator()(const Point<3> &a, const Point<3> &b) const;
+  };
+
+  /**
+   * The triangles and tetrahedra (linear or quadratic) of a gmsh mesh in
+   * format 2.2, with its nodes by tag; points and lines are dropped.
+   */
+  struct GmshMesh
+  {
+    struct Element
+    {
+      /** gmsh's type: 2, 4 (linear triangle, tetrahedron), 9, 11
+       * (quadratic). */
+      int               type;
+      /** Physical tag, elementary tag, ... */
+      std::vector<long> tags;
+      /** Corners first, then midside nodes. */
+      std::vector<long> nodes;
+
+      unsigned int
+      n_corners() const;
+    };
+
+    std::map<long, Point<3>> nodes;
+    std::vector<Element>     elements;
+  };
+
+  /** Reads @p file (gmsh's format 2.2, ASCII). Throws a message naming it
+   * for another format or element types other than points, lines,
+   * triangles and tetrahedra. */
+  GmshMesh
+  read_gmsh_mesh(const std::string &file);
+
+  /** Writes @p mesh to @p file in gmsh's format 2.2 (ASCII, every digit). */
+  void
+  write_gmsh_mesh(const GmshMesh &mesh, const std::string &file);
+
+  /**
+   * The edge (local corner indices a < b) of an element with @p corners
+   * whose straight midpoint is nearest to the midside node @p m: how a
+   * midside node is matched to its edge whatever the element type's node
+   * order.
+   */
+  std::pair<unsigned int, unsigned int>
+  nearest_edge(const std::vector<Point<3>> &corners, const Point<3> &m);
 
   /**
    * The midside nodes of a quadratic gmsh mesh, keyed by the end points of
@@ -38,7 +89,11 @@ namespace softopt
     {
       bool
       operator()(const std::pair<Point<3>, Point<3>> &x,
-                 const std::pair<Point<3>, Point<3>> &y) const;
+                 const std::pair<Point<3>, Point<3>> &y) const
+      {
+        return PointLess()(x.first, y.first) ||
+               (!PointLess()(y.first, x.first) && PointLess()(x.second, y.second));
+      }
     };
     static std::pair<Point<3>, Point<3>>
     key(const Point<3> &a, const Point<3> &b);
