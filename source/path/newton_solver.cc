@@ -80,13 +80,17 @@ namespace softopt
     for (unsigned int iteration = 0;; ++iteration)
       {
         problem.assemble(a, load_factor, residual, load, true);
-        const double norm = residual.l2_norm();
-        if (monitor.converged(iteration,
-                              norm,
-                              std::abs(load_factor) * load.l2_norm()))
+        const double norm      = residual.l2_norm();
+        const double load_norm = std::abs(load_factor) * load.l2_norm();
+        if (monitor.converged(iteration, norm, load_norm))
           return {iteration, norm};
         residual *= -1.;
-        problem.solve_tangent(residual, increment);
+        // In Newton's quadratic phase the last step's factorization is of
+        // a nearby tangent.
+        if (iteration > 0 && norm <= quadratic_phase * load_norm)
+          problem.solve_nearby_tangent(residual, increment);
+        else
+          problem.solve_tangent(residual, increment);
         problem.update(a, increment);
       }
   }

@@ -112,6 +112,7 @@ namespace softopt
     MatSetOption(system_matrix.petsc_matrix(),
                  MAT_NEW_NONZERO_ALLOCATION_ERR,
                  PETSC_TRUE);
+    scatter.reinit(triangulation.n_active_cells());
   }
 
 
@@ -148,7 +149,11 @@ namespace softopt
     for (Vec v : {static_cast<Vec>(residual), static_cast<Vec>(load)})
       VecSetOption(v, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE);
     if (with_tangent)
-      system_matrix = 0;
+      {
+        system_matrix = 0;
+        scatter.begin(system_matrix);
+        pressure_diagonal.clear();
+      }
 
     FEValues<3>     fe_values(mapping,
                           fe,
@@ -321,7 +326,8 @@ namespace softopt
             }
 
         cell_residual.add(load_factor, cell_load);
-        add_to_global(with_tangent ? &cell_matrix : nullptr,
+        add_to_global(cell->active_cell_index(),
+                      with_tangent ? &cell_matrix : nullptr,
                       {&cell_residual, &cell_load},
                       dof_indices,
                       {&residual, &load});
@@ -335,6 +341,9 @@ namespace softopt
     // the others so that the factorization sees a well-scaled identity.
     if (with_tangent)
       {
+        scatter.end();
+        for (const auto &[row, value] : pressure_diagonal)
+          MatSetValue(system_matrix.petsc_matrix(), row, row, value, ADD_VALUES);
         const double diagonal =
           Utilities::MPI::sum(diagonal_sum, triangulation_comm) /
           dof_handler.n_dofs();
@@ -360,45 +369,36 @@ namespace softopt
 
   void
   HyperelasticProblem::add_to_global(
-    const FullMatrix<double>                      *cell_matrix,
+    const unsigned int                                 cell,
+    const FullMatrix<double>                          *cell_matrix,
     const std::vector<const dealii::Vector<double> *> &cell_vectors,
-    const std::vector<types::global_dof_index>    &dof_indices,
-    const std::vector<Vector *>                   &vectors)
+    const std::vector<types::global_dof_index>        &dof_indices,
+    const std::vector<Vector *>                       &vectors)
   {
     // Homogeneous Dirichlet constraints only: a constrained row or column is
     // dropped by giving it the index -1, which PETSc skips. The displacement
     // block and the pressure diagonal go in separately: the sparsity pattern
-    // has no displacement-pressure couplings, and PETSc must not add any.
-    const unsigned int        n = dof_indices.size();
-    std::vector<PetscInt>     rows(n), u_rows;
-    std::vector<unsigned int> u_local;
-    for (unsigned int i = 0; i < n; ++i)
-      {
-        rows[i] = constraints.is_constrained(dof_indices[i]) ?
-                    -1 :
-                    static_cast<PetscInt>(dof_indices[i]);
-        if (fe.system_to_component_index(i).first != pressure_component)
-          {
-            u_local.push_back(i);
-            u_rows.push_back(rows[i]);
-          }
-      }
+    // has no displacement-pressure couplings.
+    const std::vector<PetscInt> rows = petsc_rows(dof_indices, constraints);
+    const unsigned int          n    = rows.size();
     if (cell_matrix != nullptr)
       {
+        std::vector<PetscInt>     u_rows;
+        std::vector<unsigned int> u_local;
+        for (unsigned int i = 0; i < n; ++i)
+          if (fe.system_to_component_index(i).first != pressure_component)
+            {
+              u_local.push_back(i);
+              u_rows.push_back(rows[i]);
+            }
+          else
+            pressure_diagonal.emplace_back(rows[i], (*cell_matrix)(i, i));
         const unsigned int  n_u = u_local.size();
         std::vector<double> values(n_u * n_u);
         for (unsigned int i = 0; i < n_u; ++i)
           for (unsigned int j = 0; j < n_u; ++j)
             values[i * n_u + j] = (*cell_matrix)(u_local[i], u_local[j]);
-        Mat matrix = system_matrix.petsc_matrix();
-        AssertThrow(MatSetValues(matrix, n_u, u_rows.data(), n_u, u_rows.data(),
-                                 values.data(), ADD_VALUES) == 0,
-                    ExcInternalError());
-        for (unsigned int i = 0; i < n; ++i)
-          if (fe.system_to_component_index(i).first == pressure_component)
-            AssertThrow(MatSetValue(matrix, rows[i], rows[i],
-                                    (*cell_matrix)(i, i), ADD_VALUES) == 0,
-                        ExcInternalError());
+        scatter.add(cell, u_rows, values.data());
       }
     for (unsigned int v = 0; v < vectors.size(); ++v)
       AssertThrow(VecSetValues(static_cast<Vec>(*vectors[v]),
@@ -444,6 +444,14 @@ namespace softopt
       solve_krylov(b, x, linear_solver.tolerance, linear_solver.max_iterations);
     else
       EquilibriumProblem::solve_tangent(b, x);
+  }
+
+
+
+  void
+  HyperelasticProblem::solve_nearby_tangent(const Vector &b, Vector &x)
+  {
+    solve_krylov(b, x, linear_solver.tolerance, linear_solver.max_iterations);
   }
 
 

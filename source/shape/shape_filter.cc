@@ -109,11 +109,19 @@ namespace softopt
             }
     constraints.close();
 
-    DynamicSparsityPattern dsp(relevant);
-    DoFTools::make_sparsity_pattern(dofs, dsp);
-    SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
-    matrix.reinit(owned, owned, dsp, comm);
-    mass_matrix.reinit(owned, owned, dsp, comm);
+    // The tangent leaves out the fixed rows and columns (but their
+    // diagonal): a smaller pattern for MUMPS. The mass matrix has all.
+    for (const bool with_constraints : {true, false})
+      {
+        DynamicSparsityPattern dsp(relevant);
+        if (with_constraints)
+          DoFTools::make_sparsity_pattern(dofs, dsp, constraints, false);
+        else
+          DoFTools::make_sparsity_pattern(dofs, dsp);
+        SparsityTools::distribute_sparsity_pattern(dsp, owned, comm, relevant);
+        (with_constraints ? matrix : mass_matrix).reinit(owned, owned, dsp, comm);
+      }
+    scatter.reinit(dofs.get_triangulation().n_active_cells());
 
     // The geometry of Omega_o at the quadrature points, then from it the
     // mass matrix of Omega_o (for dr_psi/dd) and |Omega_o|.
@@ -190,8 +198,13 @@ namespace softopt
     std::vector<Tensor<2, 3>>            T(n);
 
     Vector r(dofs.locally_owned_dofs(), dofs.get_communicator());
+    VecSetOption(r, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE);
     if (with_tangent)
-      matrix = 0;
+      {
+        matrix = 0;
+        scatter.begin(matrix);
+      }
+    double       diagonal_sum = 0;
     bool         inverted = false;
     unsigned int index    = 0;
     for (const auto &cell : dofs.active_cell_iterators())
@@ -248,12 +261,26 @@ namespace softopt
                     }
                 }
             }
+          const std::vector<PetscInt> rows = petsc_rows(dof_indices, constraints);
+          AssertThrow(VecSetValues(r, n, rows.data(), cell_residual.data(), ADD_VALUES) == 0,
+                      ExcInternalError());
           if (with_tangent)
-            constraints.distribute_local_to_global(
-              cell_matrix, cell_residual, dof_indices, matrix, r);
-          else
-            constraints.distribute_local_to_global(cell_residual, dof_indices, r);
+            {
+              scatter.add(cell->active_cell_index(), rows, &cell_matrix(0, 0));
+              for (unsigned int i = 0; i < n; ++i)
+                diagonal_sum += std::abs(cell_matrix(i, i));
+            }
         }
+    if (with_tangent)
+      {
+        // Constrained rows: a diagonal entry of the size of the others.
+        scatter.end();
+        const double diagonal =
+          Utilities::MPI::sum(diagonal_sum, dofs.get_communicator()) / dofs.n_dofs();
+        for (const auto i : dofs.locally_owned_dofs())
+          if (constraints.is_constrained(i))
+            MatSetValue(matrix.petsc_matrix(), i, i, diagonal, ADD_VALUES);
+      }
     r.compress(VectorOperation::add);
     if (with_tangent)
       matrix.compress(VectorOperation::add);

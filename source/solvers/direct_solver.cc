@@ -3,6 +3,7 @@
 
 #include <softopt/base/step_failure.h>
 #include <softopt/solvers/direct_solver.h>
+#include <softopt/solvers/petsc_check.h>
 
 #include <petscpc.h>
 
@@ -10,20 +11,6 @@
 
 namespace softopt
 {
-  namespace
-  {
-    void
-    check(const PetscErrorCode code, const char *call)
-    {
-      AssertThrow(code == 0,
-                  ExcMessage(std::string("PETSc call ") + call +
-                             " failed with error code " +
-                             std::to_string(code) + "."));
-    }
-  } // namespace
-
-
-
   void
   DirectSolver::declare_parameters(ParameterHandler &prm)
   {
@@ -39,7 +26,11 @@ namespace softopt
       "factorize",
       Patterns::Selection("factorize|kept factorization"),
       "How a Newton step of the physics solves with its tangent. factorize: "
-      "a MUMPS factorization of every tangent. kept factorization: GMRES "
+      "a MUMPS factorization of the tangent, except in Newton's quadratic "
+      "phase (|r| < 1e-2 |lambda P| after a first step), where GMRES "
+      "preconditioned with the last step's factorization replaces it (a "
+      "nearby tangent: a few solves instead of a factorization; it factorizes "
+      "if GMRES needs more than 'GMRES iterations'). kept factorization: GMRES "
       "preconditioned with the last factorization (of an earlier step, load "
       "step or design), which is replaced only when GMRES needs more than "
       "'GMRES iterations'; it pays where a factorization costs many solves, "
@@ -49,16 +40,16 @@ namespace softopt
     prm.declare_entry("GMRES tolerance",
                       "1e-6",
                       Patterns::Double(1e-14, 1e-1),
-                      "With kept factorization: the relative residual "
-                      "|b - K x| / |b| of a Newton step's linear solve "
+                      "The relative residual |b - K x| / |b| of a Newton "
+                      "step's linear solve by GMRES "
                       "(an inexact Newton step; well below Newton's own "
                       "reduction per step, so Newton converges as with a "
                       "factorization).");
     prm.declare_entry("GMRES iterations",
                       "20",
                       Patterns::Integer(1, 500),
-                      "With kept factorization: GMRES iterations after which "
-                      "the kept factorization counts as too far from the "
+                      "GMRES iterations of a Newton step after which the "
+                      "kept factorization counts as too far from the "
                       "tangent and the tangent is factorized.");
     prm.leave_subsection();
   }
@@ -79,7 +70,7 @@ namespace softopt
                          ordering == "PORD"  ? "4" :
                          ordering == "AMD"   ? "0" :
                                                "7";
-    check(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_7", icntl7),
+    check_petsc(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_7", icntl7),
           "PetscOptionsSetValue");
     return parameters;
   }
@@ -108,7 +99,7 @@ namespace softopt
     const Mat A = static_cast<Mat>(matrix);
     // The tangent is symmetric (Eq. LinMat and the closed-cavity follower
     // load): MUMPS reads the upper triangle and factors LDL^T (SYM = 2).
-    check(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
+    check_petsc(MatSetOption(A, MAT_SYMMETRIC, PETSC_TRUE), "MatSetOption");
 
     if (ksp == nullptr || A != analyzed_matrix)
       {
@@ -116,40 +107,40 @@ namespace softopt
           KSPDestroy(&ksp);
         if (krylov != nullptr) // its operators had the old matrix's sizes
           KSPDestroy(&krylov);
-        check(KSPCreate(comm, &ksp), "KSPCreate");
-        check(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
+        check_petsc(KSPCreate(comm, &ksp), "KSPCreate");
+        check_petsc(KSPSetType(ksp, KSPPREONLY), "KSPSetType");
         PC pc;
-        check(KSPGetPC(ksp, &pc), "KSPGetPC");
-        check(PCSetType(pc, PCCHOLESKY), "PCSetType");
-        check(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS),
+        check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
+        check_petsc(PCSetType(pc, PCCHOLESKY), "PCSetType");
+        check_petsc(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS),
               "PCFactorSetMatSolverType");
-        check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
-        check(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
+        check_petsc(KSPSetOperators(ksp, A, A), "KSPSetOperators");
+        check_petsc(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
         Mat F;
-        check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+        check_petsc(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
         // Working space: 50% above MUMPS' estimate; pivoting on the
         // indefinite tangents past limit points needs more than the default.
-        check(MatMumpsSetIcntl(F, 14, 50), "MatMumpsSetIcntl");
+        check_petsc(MatMumpsSetIcntl(F, 14, 50), "MatMumpsSetIcntl");
         analyzed_matrix = A;
       }
     else
-      check(KSPSetOperators(ksp, A, A), "KSPSetOperators");
+      check_petsc(KSPSetOperators(ksp, A, A), "KSPSetOperators");
 
     // KSPSolve would factorize again whenever the matrix changed since
     // (a new tangent assembled for a residual or an adjoint): only
     // factorize() does, so that a kept factorization is really kept.
-    check(KSPSetReusePreconditioner(ksp, PETSC_FALSE), "KSPSetReusePreconditioner");
-    check(KSPSetUp(ksp), "KSPSetUp");
-    check(KSPSetReusePreconditioner(ksp, PETSC_TRUE), "KSPSetReusePreconditioner");
+    check_petsc(KSPSetReusePreconditioner(ksp, PETSC_FALSE), "KSPSetReusePreconditioner");
+    check_petsc(KSPSetUp(ksp), "KSPSetUp");
+    check_petsc(KSPSetReusePreconditioner(ksp, PETSC_TRUE), "KSPSetReusePreconditioner");
     ++factorizations;
 
     PC  pc;
     Mat F;
-    check(KSPGetPC(ksp, &pc), "KSPGetPC");
-    check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
+    check_petsc(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
     PetscInt info = 0, info2 = 0;
-    check(MatMumpsGetInfog(F, 1, &info), "MatMumpsGetInfog");
-    check(MatMumpsGetInfog(F, 2, &info2), "MatMumpsGetInfog");
+    check_petsc(MatMumpsGetInfog(F, 1, &info), "MatMumpsGetInfog");
+    check_petsc(MatMumpsGetInfog(F, 2, &info2), "MatMumpsGetInfog");
     if (info < 0)
       throw StepFailure("the MUMPS factorization failed with INFOG(1) = " +
                         std::to_string(info) +
@@ -167,9 +158,9 @@ namespace softopt
                       PETScWrappers::MPI::Vector       &x) const
   {
     Assert(ksp != nullptr, ExcMessage("solve() before factorize()"));
-    check(KSPSolve(ksp, b, x), "KSPSolve");
+    check_petsc(KSPSolve(ksp, b, x), "KSPSolve");
     KSPConvergedReason reason;
-    check(KSPGetConvergedReason(ksp, &reason), "KSPGetConvergedReason");
+    check_petsc(KSPGetConvergedReason(ksp, &reason), "KSPGetConvergedReason");
     if (reason < 0)
       throw StepFailure("the solve with the MUMPS factorization failed "
                         "(PETSc KSPConvergedReason " +
@@ -214,23 +205,23 @@ namespace softopt
       return factorize_and_solve(0);
     if (krylov == nullptr)
       {
-        check(KSPCreate(comm, &krylov), "KSPCreate");
-        check(KSPSetType(krylov, KSPGMRES), "KSPSetType");
+        check_petsc(KSPCreate(comm, &krylov), "KSPCreate");
+        check_petsc(KSPSetType(krylov, KSPGMRES), "KSPSetType");
         // Right preconditioning: GMRES minimizes the true residual b - K x.
-        check(KSPSetPCSide(krylov, PC_RIGHT), "KSPSetPCSide");
-        check(KSPGMRESSetOrthogonalization(
+        check_petsc(KSPSetPCSide(krylov, PC_RIGHT), "KSPSetPCSide");
+        check_petsc(KSPGMRESSetOrthogonalization(
                 krylov, KSPGMRESModifiedGramSchmidtOrthogonalization),
               "KSPGMRESSetOrthogonalization");
         PC pc;
-        check(KSPGetPC(krylov, &pc), "KSPGetPC");
-        check(PCSetType(pc, PCSHELL), "PCSetType");
-        check(PCShellSetApply(pc, apply_factorization), "PCShellSetApply");
+        check_petsc(KSPGetPC(krylov, &pc), "KSPGetPC");
+        check_petsc(PCSetType(pc, PCSHELL), "PCSetType");
+        check_petsc(PCShellSetApply(pc, apply_factorization), "PCShellSetApply");
       }
     PC pc;
-    check(KSPGetPC(krylov, &pc), "KSPGetPC");
-    check(PCShellSetContext(pc, ksp), "PCShellSetContext");
+    check_petsc(KSPGetPC(krylov, &pc), "KSPGetPC");
+    check_petsc(PCShellSetContext(pc, ksp), "PCShellSetContext");
     const Mat A = static_cast<Mat>(matrix);
-    check(KSPSetOperators(krylov, A, A), "KSPSetOperators");
+    check_petsc(KSPSetOperators(krylov, A, A), "KSPSetOperators");
     // GMRES's residual is a recurrence that drifts from the true b - K x on
     // ill-conditioned tangents (nu near 0.5); a converged solve is checked
     // and, if need be, continued from its result, which recomputes the
@@ -239,18 +230,18 @@ namespace softopt
     const double               goal       = tolerance * b.l2_norm();
     unsigned int               iterations = 0;
     PETScWrappers::MPI::Vector residual(b);
-    check(KSPSetInitialGuessNonzero(krylov, PETSC_FALSE), "KSPSetInitialGuessNonzero");
+    check_petsc(KSPSetInitialGuessNonzero(krylov, PETSC_FALSE), "KSPSetInitialGuessNonzero");
     for (unsigned int cycle = 0; cycle < 3 && iterations < max_iterations; ++cycle)
       {
         const unsigned int remaining = max_iterations - iterations;
-        check(KSPGMRESSetRestart(krylov, remaining), "KSPGMRESSetRestart");
-        check(KSPSetTolerances(krylov, 0., goal, PETSC_DEFAULT, remaining),
+        check_petsc(KSPGMRESSetRestart(krylov, remaining), "KSPGMRESSetRestart");
+        check_petsc(KSPSetTolerances(krylov, 0., goal, PETSC_DEFAULT, remaining),
               "KSPSetTolerances");
-        check(KSPSolve(krylov, b, x), "KSPSolve");
+        check_petsc(KSPSolve(krylov, b, x), "KSPSolve");
         KSPConvergedReason reason;
         PetscInt           cycle_iterations = 0;
-        check(KSPGetConvergedReason(krylov, &reason), "KSPGetConvergedReason");
-        check(KSPGetIterationNumber(krylov, &cycle_iterations), "KSPGetIterationNumber");
+        check_petsc(KSPGetConvergedReason(krylov, &reason), "KSPGetConvergedReason");
+        check_petsc(KSPGetIterationNumber(krylov, &cycle_iterations), "KSPGetIterationNumber");
         iterations += cycle_iterations;
         if (reason <= 0)
           break;
@@ -258,7 +249,7 @@ namespace softopt
         residual.sadd(-1., b);
         if (residual.l2_norm() <= goal)
           return {iterations, false, 0.};
-        check(KSPSetInitialGuessNonzero(krylov, PETSC_TRUE), "KSPSetInitialGuessNonzero");
+        check_petsc(KSPSetInitialGuessNonzero(krylov, PETSC_TRUE), "KSPSetInitialGuessNonzero");
       }
     return factorize_and_solve(iterations);
   }
@@ -278,10 +269,10 @@ namespace softopt
   {
     PC  pc;
     Mat F;
-    check(KSPGetPC(ksp, &pc), "KSPGetPC");
-    check(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
+    check_petsc(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
     PetscInt n = 0;
-    check(MatMumpsGetInfog(F, 12, &n), "MatMumpsGetInfog");
+    check_petsc(MatMumpsGetInfog(F, 12, &n), "MatMumpsGetInfog");
     return n;
   }
 

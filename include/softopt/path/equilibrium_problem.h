@@ -52,6 +52,15 @@ namespace softopt
       solve(b, x);
     }
 
+    /** As solve_tangent(), for a Newton step whose previous step's
+     * factorization is of a nearby tangent (Newton's quadratic phase): a
+     * problem may iterate on that factorization instead of factorizing. */
+    virtual void
+    solve_nearby_tangent(const Vector &b, Vector &x)
+    {
+      solve_tangent(b, x);
+    }
+
     /** x = K^{-1} b with the last factorization (constrained entries zero).
      * For a condensed system, K, b and x hold only the retained unknowns. */
     virtual void

@@ -56,13 +56,16 @@ namespace softopt
 
     /**
      * Solves r_a(a, lambda) = 0 starting from @p a by Newton's method, each
-     * step solving with its own tangent (EquilibriumProblem::solve_tangent:
-     * a fresh factorization, or GMRES on a kept one). On return the tangent
-     * at the converged state is assembled and the factorization held is of
-     * a nearby tangent. Throws StepFailure when the iteration does not
-     * converge. (Modified Newton, steps with a kept factorization and no
-     * Krylov method, was measured for warm starts and dropped:
-     * doc/benchmarks.md.)
+     * step solving with its own tangent: a fresh factorization
+     * (EquilibriumProblem::solve_tangent), or, once |r| is below
+     * quadratic_phase |lambda P| after a first step, GMRES on the last
+     * step's factorization (solve_nearby_tangent; in that phase the
+     * tangent has moved little, and a step saves a factorization for a few
+     * solves). On return the tangent at the converged state is assembled
+     * and the factorization held is of a nearby tangent. Throws StepFailure
+     * when the iteration does not converge. (Modified Newton, steps with a
+     * kept factorization and no Krylov method, was measured for warm starts
+     * and dropped: doc/benchmarks.md.)
      */
     Result
     solve(EquilibriumProblem         &problem,
@@ -74,6 +77,9 @@ namespace softopt
 
     /** Iterations before a step counts as failed. */
     unsigned int max_iterations = 12;
+    /** Below this |r| / |lambda P|, after a first step, Newton counts as
+     * in its quadratic phase (EquilibriumProblem::solve_nearby_tangent). */
+    static constexpr double quadratic_phase = 1e-2;
   };
 } // namespace softopt
 

@@ -15,6 +15,7 @@
 #include <softopt/geometry/geometry.h>
 #include <softopt/path/equilibrium_problem.h>
 #include <softopt/physics/material.h>
+#include <softopt/solvers/cell_matrix_scatter.h>
 #include <softopt/solvers/direct_solver.h>
 
 #include <memory>
@@ -88,6 +89,12 @@ namespace softopt
      * held (DirectSolver::solve_krylov). */
     void
     solve_tangent(const Vector &b, Vector &x) override;
+
+    /** GMRES on the factorization held, to the GMRES tolerance of
+     * subsection "Linear solver" (it factorizes if GMRES does not converge
+     * within its iterations). */
+    void
+    solve_nearby_tangent(const Vector &b, Vector &x) override;
 
     /** x = K^{-1} b for the tangent of the last assemble() by GMRES on the
      * factorization held, to 1e-10 relative residual (about the accuracy
@@ -198,10 +205,11 @@ namespace softopt
                  const double       tolerance,
                  const unsigned int max_iterations);
 
-    /** Adds a cell's matrix (if not null) and vectors to the global ones,
-     * dropping constrained rows and columns. */
+    /** Adds cell @p cell's matrix (if not null) and vectors to the global
+     * ones, dropping constrained rows and columns. */
     void
-    add_to_global(const FullMatrix<double>                          *cell_matrix,
+    add_to_global(unsigned int                                       cell,
+                  const FullMatrix<double>                          *cell_matrix,
                   const std::vector<const dealii::Vector<double> *> &cell_vectors,
                   const std::vector<types::global_dof_index>        &dof_indices,
                   const std::vector<Vector *>                       &vectors);
@@ -229,6 +237,10 @@ namespace softopt
     std::vector<double>                 cell_volume;
 
     PETScWrappers::MPI::SparseMatrix system_matrix;
+    CellMatrixScatter                scatter;
+    /** The condensed pressure's diagonal entries of the assembly under
+     * way: added after the scatter's displacement blocks. */
+    std::vector<std::pair<PetscInt, double>> pressure_diagonal;
     DirectSolver                     direct_solver;
     DirectSolver::Parameters         linear_solver;
 

@@ -10,6 +10,7 @@
 #include <softopt/base/input.h>
 #include <softopt/geometry/geometry.h>
 #include <softopt/shape/design_configuration.h>
+#include <softopt/solvers/cell_matrix_scatter.h>
 #include <softopt/solvers/direct_solver.h>
 
 namespace softopt
@@ -141,6 +142,7 @@ namespace softopt
     const DesignConfiguration       *design = nullptr;
     AffineConstraints<double>        constraints;
     PETScWrappers::MPI::SparseMatrix matrix;
+    CellMatrixScatter                scatter;
     PETScWrappers::MPI::SparseMatrix mass_matrix;
     std::unique_ptr<DirectSolver>    solver;
     /** (d, psi) of the last solve() while its tangent is not assembled. */
