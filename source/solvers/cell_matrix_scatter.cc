@@ -38,6 +38,10 @@ namespace softopt
     if (matrix != nullptr) // an assembly left by an exception
       end();
     matrix = m.petsc_matrix();
+    // A new nonzero (through the stash of another rank's rows) would shift
+    // the kept positions: make it an error instead.
+    check_petsc(MatSetOption(matrix, MAT_NEW_NONZERO_ALLOCATION_ERR, PETSC_TRUE),
+                "MatSetOption");
     PetscBool assembled = PETSC_FALSE;
     check_petsc(MatAssembled(matrix, &assembled), "MatAssembled");
     if (!assembled)
