@@ -31,8 +31,7 @@ namespace
     softopt::Settings settings(SOURCE_DIR "/inputs/sphere_design.prm");
     settings.optimization.remesh_quality      = remesh_quality;
     if (restart) // as softopt optimize --restart
-      if (const auto mesh = softopt::Checkpoint::mesh_file(directory); !mesh.empty())
-        settings.geometry.mesh_file = mesh;
+      softopt::Checkpoint::select_mesh(directory, settings.geometry.mesh_file);
     settings.output_directory                 = directory;
     settings.print_timings                    = false;
     settings.optimization.maximum_iterations  = iterations;

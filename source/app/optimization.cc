@@ -51,9 +51,7 @@ namespace softopt
     Timer timer;
     // A checkpoint written after a remesh lives on that mesh.
     if (restart)
-      if (const auto mesh = Checkpoint::mesh_file(settings.output_directory);
-          !mesh.empty())
-        settings.geometry.mesh_file = mesh;
+      Checkpoint::select_mesh(settings.output_directory, settings.geometry.mesh_file);
     DesignProblem problem(settings);
     pcout << "Mesh: " << problem.hyperelastic_problem().get_dof_handler()
                            .get_triangulation()

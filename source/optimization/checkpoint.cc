@@ -18,6 +18,15 @@ namespace softopt
       // Before the warm start's secant was part of it (read without).
       constexpr std::uint64_t magic_1 = 0x736f66746f707431; // "softopt1"
 
+      /** The checkpoint to read: "checkpoint", or "checkpoint.old" if a
+       * run was killed between the two renames of save(). */
+      std::string
+      existing_directory(const std::string &output_directory)
+      {
+        const auto dir = directory(output_directory);
+        return std::filesystem::exists(dir) ? dir : dir + ".old";
+      }
+
       std::string
       rank_file(const std::string &dir, const MPI_Comm comm)
       {
@@ -179,14 +188,19 @@ namespace softopt
     std::string
     mesh_file(const std::string &output_directory)
     {
-      // As load(): ".old" if a run was killed between the renames of save().
-      const auto dir = std::filesystem::exists(directory(output_directory)) ?
-                         directory(output_directory) :
-                         directory(output_directory) + ".old";
       std::string   name;
-      std::ifstream in(dir + "/mesh");
+      std::ifstream in(existing_directory(output_directory) + "/mesh");
       std::getline(in, name);
       return name.empty() ? name : output_directory + "/" + name;
+    }
+
+
+
+    void
+    select_mesh(const std::string &output_directory, std::string &mesh_file_name)
+    {
+      if (const auto name = mesh_file(output_directory); !name.empty())
+        mesh_file_name = name;
     }
 
 
@@ -202,12 +216,7 @@ namespace softopt
          SecantPredictor          &secant)
     {
       const auto comm = d.get_mpi_communicator();
-      // A run killed between the two renames of save() left ".old".
-      const auto dir =
-        std::filesystem::exists(directory(output_directory)) ?
-          directory(output_directory) :
-          directory(output_directory) + ".old";
-      const auto    file = rank_file(dir, comm);
+      const auto    file = rank_file(existing_directory(output_directory), comm);
       std::ifstream in(file, std::ios::binary);
       AssertThrow(in,
                   ExcMessage("--restart: there is no checkpoint " + file +

@@ -226,7 +226,6 @@ namespace softopt
     auto old_triangulation = std::move(triangulation);
     auto old_design        = std::move(design);
     auto old_problem       = std::move(problem);
-    const Vector      old_psi  = psi;
     const std::string old_file = settings.geometry.mesh_file;
     try
       {
@@ -239,8 +238,7 @@ namespace softopt
         design        = std::move(old_design);
         triangulation = std::move(old_triangulation);
         settings.geometry.mesh_file = old_file;
-        psi.reinit(old_psi);
-        psi = old_psi;
+        // psi is untouched: build() sets it up last.
         settings.shape_filter.setup(*design, settings.geometry);
         throw;
       }

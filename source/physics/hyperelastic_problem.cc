@@ -344,12 +344,7 @@ namespace softopt
         scatter.end();
         for (const auto &[row, value] : pressure_diagonal)
           MatSetValue(system_matrix.petsc_matrix(), row, row, value, ADD_VALUES);
-        const double diagonal =
-          Utilities::MPI::sum(diagonal_sum, triangulation_comm) /
-          dof_handler.n_dofs();
-        for (const auto i : locally_owned_dofs)
-          if (constraints.is_constrained(i))
-            MatSetValue(system_matrix.petsc_matrix(), i, i, diagonal, ADD_VALUES);
+        add_constrained_diagonal(system_matrix, constraints, locally_owned_dofs, diagonal_sum);
       }
 
     residual.compress(VectorOperation::add);

@@ -273,13 +273,8 @@ namespace softopt
         }
     if (with_tangent)
       {
-        // Constrained rows: a diagonal entry of the size of the others.
         scatter.end();
-        const double diagonal =
-          Utilities::MPI::sum(diagonal_sum, dofs.get_communicator()) / dofs.n_dofs();
-        for (const auto i : dofs.locally_owned_dofs())
-          if (constraints.is_constrained(i))
-            MatSetValue(matrix.petsc_matrix(), i, i, diagonal, ADD_VALUES);
+        add_constrained_diagonal(matrix, constraints, dofs.locally_owned_dofs(), diagonal_sum);
       }
     r.compress(VectorOperation::add);
     if (with_tangent)

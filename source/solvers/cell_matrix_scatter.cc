@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 
 #include <softopt/solvers/cell_matrix_scatter.h>
 #include <softopt/solvers/petsc_check.h>
@@ -212,5 +213,22 @@ namespace softopt
                   -1 :
                   static_cast<PetscInt>(dof_indices[i]);
     return rows;
+  }
+
+
+
+  void
+  add_constrained_diagonal(PETScWrappers::MPI::SparseMatrix &matrix,
+                           const AffineConstraints<double>  &constraints,
+                           const IndexSet                   &locally_owned,
+                           const double                      abs_diagonal_sum)
+  {
+    const double diagonal =
+      Utilities::MPI::sum(abs_diagonal_sum, matrix.get_mpi_communicator()) /
+      matrix.m();
+    for (const auto i : locally_owned)
+      if (constraints.is_constrained(i))
+        check_petsc(MatSetValue(matrix.petsc_matrix(), i, i, diagonal, ADD_VALUES),
+                    "MatSetValue");
   }
 } // namespace softopt

@@ -52,6 +52,11 @@ namespace softopt
     std::string
     mesh_file(const std::string &output_directory);
 
+    /** For a restart: sets @p mesh_file_name (the parameter file's Mesh
+     * file) to the checkpoint's mesh_file() if it names one. */
+    void
+    select_mesh(const std::string &output_directory, std::string &mesh_file_name);
+
     /** Reads the vectors (set up with the partition of this run; the
      * states like @p state_template) and MMA's state, and returns the
      * iteration to continue with. Throws a message

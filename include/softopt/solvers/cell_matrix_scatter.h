@@ -77,6 +77,16 @@ namespace softopt
   std::vector<PetscInt>
   petsc_rows(const std::vector<types::global_dof_index> &dof_indices,
              const AffineConstraints<double>            &constraints);
+
+  /** The rows petsc_rows() dropped get a diagonal entry of the mean size of
+   * all diagonal entries (@p abs_diagonal_sum: this rank's sum of
+   * |cell matrix(i, i)|), so that the factorization sees a well-scaled
+   * identity there. Before compressing @p matrix. */
+  void
+  add_constrained_diagonal(PETScWrappers::MPI::SparseMatrix &matrix,
+                           const AffineConstraints<double>  &constraints,
+                           const IndexSet                   &locally_owned,
+                           double                            abs_diagonal_sum);
 } // namespace softopt
 
 #endif
