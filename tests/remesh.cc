@@ -83,6 +83,13 @@ main(int argc, char **argv)
   const auto after = problem.evaluate(problem.create_design_vector());
   deallog << "the mesh file is " << (std::filesystem::exists(file) ? "" : "NOT ")
           << "there" << std::endl;
+  // "Physics over the run" counts the old mesh's physics too.
+  const unsigned int assemblies_new_mesh =
+    problem.hyperelastic_problem().get_statistics().n_assemblies;
+  const unsigned int assemblies_run = problem.physics_statistics().n_assemblies;
+  deallog << "assemblies over the run: "
+          << (assemblies_run > assemblies_new_mesh ? "some" : "NONE") << " on the old mesh, "
+          << (assemblies_new_mesh > 0 ? "some" : "NONE") << " on the new one" << std::endl;
   const auto cells_after = problem.hyperelastic_problem()
                              .get_dof_handler()
                              .get_triangulation()

@@ -104,9 +104,10 @@ namespace softopt
     if (settings.print_timings)
       {
         // The unit of scripts/bench_iteration: one assembly plus one
-        // numerical factorization of the physics on this mesh.
-        const auto &stats = problem.hyperelastic_problem().get_statistics();
-        pcout << "Physics over the run: " << stats.summary() << std::endl;
+        // numerical factorization of the physics (means over every mesh
+        // of the run).
+        pcout << "Physics over the run: " << problem.physics_statistics().summary()
+              << std::endl;
         problem.timer().print_summary();
         pcout << "Wall time: " << timer.wall_time() << " s" << std::endl;
       }

@@ -242,6 +242,7 @@ namespace softopt
         settings.shape_filter.setup(*design, settings.geometry);
         throw;
       }
+    earlier_meshes_statistics += old_problem->get_statistics();
     old_problem.reset(); // before the DoFs and the mesh it lives on
     old_design.reset();
     // Nothing carries over: the next evaluate() follows the path from zero.
@@ -291,6 +292,16 @@ namespace softopt
   DesignProblem::hyperelastic_problem() const
   {
     return *problem;
+  }
+
+
+
+  HyperelasticProblem::Statistics
+  DesignProblem::physics_statistics() const
+  {
+    HyperelasticProblem::Statistics all = earlier_meshes_statistics;
+    all += problem->get_statistics();
+    return all;
   }
 
 

@@ -106,12 +106,14 @@ namespace softopt
       MeshBeforeUpdate{problem.design_configuration().initial_coordinates(),
                        problem.shape_field(),
                        d,
-                       accepted});
+                       accepted,
+                       nullptr});
     try
       {
         problem.update_mesh(d);
-        d        = 0;
-        accepted = d;
+        d           = 0;
+        accepted    = d;
+        before->mma = std::move(mma);
         reset_mma();
       }
     catch (const std::exception &)
@@ -204,6 +206,8 @@ namespace softopt
     problem.restore(before->initial_coordinates, before->shape_field);
     d        = before->d;
     accepted = before->accepted;
+    if (before->mma)
+      mma = std::move(before->mma);
     before.reset();
   }
 

@@ -730,6 +730,23 @@ namespace softopt
 
 
 
+  HyperelasticProblem::Statistics &
+  HyperelasticProblem::Statistics::operator+=(const Statistics &other)
+  {
+    n_assemblies += other.n_assemblies;
+    n_factorizations += other.n_factorizations;
+    n_solves += other.n_solves;
+    n_residuals += other.n_residuals;
+    n_krylov_iterations += other.n_krylov_iterations;
+    assembly_time += other.assembly_time;
+    factorization_time += other.factorization_time;
+    solve_time += other.solve_time;
+    residual_time += other.residual_time;
+    return *this;
+  }
+
+
+
   const HyperelasticProblem::Statistics &
   HyperelasticProblem::get_statistics() const
   {

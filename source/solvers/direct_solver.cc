@@ -5,12 +5,43 @@
 #include <softopt/solvers/direct_solver.h>
 #include <softopt/solvers/petsc_check.h>
 
+#include <deal.II/base/mpi.h>
+
 #include <petscpc.h>
 
+#include <iostream>
 #include <string>
 
 namespace softopt
 {
+  namespace
+  {
+    /** MUMPS' ICNTL(7) / INFOG(7) code of a fill-reducing ordering. */
+    std::string
+    ordering_name(const PetscInt code)
+    {
+      switch (code)
+        {
+          case 0:
+            return "AMD";
+          case 2:
+            return "AMF";
+          case 3:
+            return "SCOTCH";
+          case 4:
+            return "PORD";
+          case 5:
+            return "METIS";
+          case 6:
+            return "QAMD";
+          default:
+            return "ordering " + std::to_string(code);
+        }
+    }
+  } // namespace
+
+
+
   void
   DirectSolver::declare_parameters(ParameterHandler &prm)
   {
@@ -20,6 +51,8 @@ namespace softopt
                       Patterns::Selection("automatic|METIS|PORD|AMD"),
                       "The fill-reducing ordering of MUMPS' analysis "
                       "(ICNTL(7)); automatic lets MUMPS choose (PORD here). "
+                      "METIS needs a MUMPS built with it (Debian's is not: "
+                      "MUMPS then uses PORD, and softopt says so). "
                       "doc/benchmarks.md compares them on the actuator.");
     prm.declare_entry(
       "Newton steps",
@@ -133,6 +166,8 @@ namespace softopt
     check_petsc(KSPSetUp(ksp), "KSPSetUp");
     check_petsc(KSPSetReusePreconditioner(ksp, PETSC_TRUE), "KSPSetReusePreconditioner");
     ++factorizations;
+    if (factorizations == 1)
+      warn_if_ordering_replaced();
 
     PC  pc;
     Mat F;
@@ -149,6 +184,33 @@ namespace softopt
                         (info == -9 || info == -8 ?
                            " (MUMPS ran out of working space)" :
                            ""));
+  }
+
+
+
+  void
+  DirectSolver::warn_if_ordering_replaced() const
+  {
+    // MUMPS falls back to its default ordering, silently, when it was built
+    // without the one asked for (Debian's has neither METIS nor SCOTCH).
+    static bool warned = false;
+    PetscInt    requested = 7;
+    PetscBool   set       = PETSC_FALSE;
+    check_petsc(PetscOptionsGetInt(nullptr, nullptr, "-mat_mumps_icntl_7", &requested, &set),
+                "PetscOptionsGetInt");
+    if (warned || !set || requested == 7)
+      return;
+    PC       pc;
+    Mat      F;
+    PetscInt used = requested;
+    check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
+    check_petsc(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    check_petsc(MatMumpsGetInfog(F, 7, &used), "MatMumpsGetInfog");
+    if (used != requested && Utilities::MPI::this_mpi_process(comm) == 0)
+      std::cout << "Warning: subsection \"Linear solver\", \"MUMPS ordering\": this "
+                << "MUMPS cannot use " << ordering_name(requested) << " and uses "
+                << ordering_name(used) << " instead." << std::endl;
+    warned = true;
   }
 
 

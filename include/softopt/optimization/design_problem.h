@@ -106,6 +106,11 @@ namespace softopt
     const DesignConfiguration &
     design_configuration() const;
 
+    /** The physics' counts and times over the run, on every mesh it had
+     * (a new mesh builds a new HyperelasticProblem). */
+    HyperelasticProblem::Statistics
+    physics_statistics() const;
+
     /** Sets the states at the targets and the warm start's secant (a
      * restart: the next evaluate() warm-starts from them like an
      * uninterrupted run). */
@@ -180,6 +185,8 @@ namespace softopt
     std::unique_ptr<parallel::fullydistributed::Triangulation<3>> triangulation;
     std::unique_ptr<DesignConfiguration>          design;
     std::unique_ptr<HyperelasticProblem>          problem;
+    /** The statistics of the physics on earlier meshes of the run. */
+    HyperelasticProblem::Statistics               earlier_meshes_statistics;
     std::vector<const Functional *>               functionals_;
     std::unique_ptr<Functional>                   volume;
     std::vector<double>                           targets;

@@ -49,6 +49,8 @@ namespace softopt
     struct MeshBeforeUpdate
     {
       Vector initial_coordinates, shape_field, d, accepted;
+      /** MMA with its asymptotes and history on the old mesh's d. */
+      std::unique_ptr<MMA> mma;
     };
 
     /** X_o <- X_o + psi(d), d <- 0 and a fresh MMA, at iteration @p k;

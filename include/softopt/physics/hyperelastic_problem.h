@@ -192,6 +192,11 @@ namespace softopt
        * it). */
       std::string
       summary() const;
+
+      /** Adds @p other's counts and times (the physics of an earlier mesh
+       * of the run). */
+      Statistics &
+      operator+=(const Statistics &other);
     };
 
     const Statistics &
