@@ -2,6 +2,7 @@
 
 #include <softopt/geometry/gmsh_mesh.h>
 #include <softopt/shape/boundary_faces.h>
+#include <softopt/shape/quadratic_tetrahedron.h>
 #include <softopt/shape/remesh.h>
 
 #include <algorithm>
@@ -114,41 +115,20 @@ namespace softopt
       std::array<std::pair<Edge, long>, 6> edges;
     };
 
-    /**
-     * min det J / max det J of the P2 map of @p t at its ten nodes and
-     * centroid (negative: inverted), with node positions from @p position.
-     */
+    /** The nodes of @p t, with positions from @p position. */
     template <typename Position>
-    double
-    jacobian_ratio(const Tetrahedron &t, const Position &position)
+    QuadraticTetrahedron
+    nodes(const Tetrahedron &t, const Position &position)
     {
-      // Barycentric L_0 = 1 - x - y - z, L_a = x_a, and their gradients.
-      const std::array<Tensor<1, 3>, 4> dL{{Tensor<1, 3>({-1., -1., -1.}),
-                                            Tensor<1, 3>({1., 0., 0.}),
-                                            Tensor<1, 3>({0., 1., 0.}),
-                                            Tensor<1, 3>({0., 0., 1.})}};
-      std::vector<Point<3>> points{Point<3>(0, 0, 0), Point<3>(1, 0, 0),
-                                   Point<3>(0, 1, 0), Point<3>(0, 0, 1),
-                                   Point<3>(.25, .25, .25)};
-      for (const auto &[local, tag] : t.edges)
-        points.push_back((points[local.first] + points[local.second]) / 2.);
-      double smallest = std::numeric_limits<double>::max(), largest = 0;
-      for (const auto &x : points)
-        {
-          const std::array<double, 4> L{{1 - x[0] - x[1] - x[2], x[0], x[1], x[2]}};
-          Tensor<2, 3>                J;
-          // Corners: L_a (2 L_a - 1); edges: 4 L_a L_b.
-          for (unsigned int a = 0; a < 4; ++a)
-            J += outer_product(position(t.corners[a]), (4 * L[a] - 1) * dL[a]);
-          for (const auto &[local, tag] : t.edges)
-            J += outer_product(position(tag),
-                               4 * (L[local.first] * dL[local.second] +
-                                    L[local.second] * dL[local.first]));
-          smallest = std::min(smallest, determinant(J));
-          largest  = std::max(largest, determinant(J));
-        }
-      return smallest / largest;
+      QuadraticTetrahedron result;
+      for (unsigned int a = 0; a < 4; ++a)
+        result.corners[a] = position(t.corners[a]);
+      for (unsigned int e = 0; e < 6; ++e)
+        result.edges[e] = {t.edges[e].first, position(t.edges[e].second)};
+      return result;
     }
+
+
 
     /**
      * Whether every midside node of @p t is nearest to the straight midpoint
@@ -238,7 +218,7 @@ namespace softopt
             if (std::any_of(t.edges.begin(), t.edges.end(), [&](const auto &e) {
                   return moved.count(e.second) > 0;
                 }) &&
-                (jacobian_ratio(t, position) < 0.2 || !matches_edges(t, position)))
+                (jacobian_ratio(nodes(t, position)) < 0.2 || !matches_edges(t, position)))
               for (const auto &e : t.edges)
                 reverted |= moved.erase(e.second) > 0;
         }
