@@ -9,7 +9,6 @@
 #include <array>
 #include <filesystem>
 #include <fstream>
-#include <limits>
 #include <map>
 
 namespace softopt
