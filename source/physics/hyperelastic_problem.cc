@@ -107,11 +107,8 @@ namespace softopt
                          locally_owned_dofs,
                          dsp,
                          triangulation_comm);
-    // An entry outside the pattern is a bug: never let PETSc allocate it
-    // (that would also force a new symbolic factorization).
-    MatSetOption(system_matrix.petsc_matrix(),
-                 MAT_NEW_NONZERO_ALLOCATION_ERR,
-                 PETSC_TRUE);
+    // The scatter also makes an entry outside the pattern an error (PETSc
+    // would allocate it and force a new symbolic factorization).
     scatter.reinit(triangulation.n_active_cells());
   }
 

@@ -134,15 +134,12 @@ namespace softopt
      * of its own edge, as split_quadratic_gmsh_mesh() assigns midside nodes
      * when it reads the file back.
      */
-    template <typename Position>
     bool
-    matches_edges(const Tetrahedron &t, const Position &position)
+    matches_edges(const QuadraticTetrahedron &t)
     {
-      std::vector<Point<3>> corners;
-      for (const long c : t.corners)
-        corners.push_back(position(c));
-      for (const auto &[own, tag] : t.edges)
-        if (nearest_edge(corners, position(tag)) != own)
+      const std::vector<Point<3>> corners(t.corners.begin(), t.corners.end());
+      for (const auto &[own, node] : t.edges)
+        if (nearest_edge(corners, node) != own)
           return false;
       return true;
     }
@@ -216,10 +213,11 @@ namespace softopt
           for (const auto &t : tetrahedra)
             if (std::any_of(t.edges.begin(), t.edges.end(), [&](const auto &e) {
                   return moved.count(e.second) > 0;
-                }) &&
-                (jacobian_ratio(nodes(t, position)) < 0.2 || !matches_edges(t, position)))
-              for (const auto &e : t.edges)
-                reverted |= moved.erase(e.second) > 0;
+                }))
+              if (const auto curved = nodes(t, position);
+                  jacobian_ratio(curved) < 0.2 || !matches_edges(curved))
+                for (const auto &e : t.edges)
+                  reverted |= moved.erase(e.second) > 0;
         }
       for (const auto &[tag, p] : moved)
         mesh.nodes[tag] = p;

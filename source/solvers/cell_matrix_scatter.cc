@@ -52,20 +52,20 @@ namespace softopt
       }
     PetscBool is_mpi = PETSC_FALSE, is_seq = PETSC_FALSE;
     check_petsc(PetscObjectTypeCompare((PetscObject)matrix, MATMPIAIJ, &is_mpi),
-          "PetscObjectTypeCompare");
+                "PetscObjectTypeCompare");
     check_petsc(PetscObjectTypeCompare((PetscObject)matrix, MATSEQAIJ, &is_seq),
-          "PetscObjectTypeCompare");
+                "PetscObjectTypeCompare");
     AssertThrow(is_mpi || is_seq,
                 ExcMessage("CellMatrixScatter needs an AIJ matrix."));
     if (is_mpi)
       {
         check_petsc(MatMPIAIJGetSeqAIJ(matrix,
-                                 &diagonal_block,
-                                 &off_diagonal_block,
-                                 &off_diagonal_columns),
-              "MatMPIAIJGetSeqAIJ");
+                                       &diagonal_block,
+                                       &off_diagonal_block,
+                                       &off_diagonal_columns),
+                    "MatMPIAIJGetSeqAIJ");
         check_petsc(MatGetLocalSize(off_diagonal_block, nullptr, &n_off_diagonal_columns),
-              "MatGetLocalSize");
+                    "MatGetLocalSize");
       }
     else
       {
@@ -74,7 +74,7 @@ namespace softopt
       }
     check_petsc(MatGetOwnershipRange(matrix, &row_begin, &row_end), "MatGetOwnershipRange");
     check_petsc(MatGetOwnershipRangeColumn(matrix, &column_begin, &column_end),
-          "MatGetOwnershipRangeColumn");
+                "MatGetOwnershipRangeColumn");
     for (const Mat block : {diagonal_block, off_diagonal_block})
       if (block != nullptr)
         {
@@ -82,7 +82,7 @@ namespace softopt
           const PetscInt *ia, *ja;
           PetscBool       done = PETSC_FALSE;
           check_petsc(MatGetRowIJ(block, 0, PETSC_FALSE, PETSC_FALSE, &n_rows, &ia, &ja, &done),
-                "MatGetRowIJ");
+                      "MatGetRowIJ");
           AssertThrow(done, ExcMessage("CellMatrixScatter: no CSR structure."));
           (block == diagonal_block ? diagonal_csr : off_diagonal_csr) = {ia, ja};
         }
@@ -90,7 +90,7 @@ namespace softopt
     check_petsc(MatSeqAIJGetArray(diagonal_block, &diagonal_values), "MatSeqAIJGetArray");
     if (off_diagonal_block != nullptr)
       check_petsc(MatSeqAIJGetArray(off_diagonal_block, &off_diagonal_values),
-            "MatSeqAIJGetArray");
+                  "MatSeqAIJGetArray");
   }
 
 
@@ -175,7 +175,7 @@ namespace softopt
           }
       else if (p[0] == remote)
         check_petsc(MatSetValues(matrix, 1, &rows[i], n, rows.data(), values, ADD_VALUES),
-              "MatSetValues");
+                    "MatSetValues");
   }
 
 
@@ -184,10 +184,10 @@ namespace softopt
   CellMatrixScatter::end()
   {
     check_petsc(MatSeqAIJRestoreArray(diagonal_block, &diagonal_values),
-          "MatSeqAIJRestoreArray");
+                "MatSeqAIJRestoreArray");
     if (off_diagonal_block != nullptr)
       check_petsc(MatSeqAIJRestoreArray(off_diagonal_block, &off_diagonal_values),
-            "MatSeqAIJRestoreArray");
+                  "MatSeqAIJRestoreArray");
     for (const Mat block : {diagonal_block, off_diagonal_block})
       if (block != nullptr)
         {
@@ -195,8 +195,8 @@ namespace softopt
           PetscInt  n_rows;
           PetscBool done;
           check_petsc(MatRestoreRowIJ(block, 0, PETSC_FALSE, PETSC_FALSE, &n_rows,
-                                &csr.first, &csr.second, &done),
-                "MatRestoreRowIJ");
+                                      &csr.first, &csr.second, &done),
+                      "MatRestoreRowIJ");
         }
     matrix = diagonal_block = off_diagonal_block = nullptr;
   }

@@ -38,6 +38,33 @@ namespace softopt
             return "ordering " + std::to_string(code);
         }
     }
+
+
+
+    /**
+     * Says once per run if MUMPS used another ordering than the one of
+     * "MUMPS ordering" for the factor @p F: it falls back to its default,
+     * silently, when it was built without the one asked for (Debian's MUMPS
+     * has neither METIS nor SCOTCH).
+     */
+    void
+    warn_if_ordering_replaced(const Mat F, const MPI_Comm comm)
+    {
+      static bool warned    = false;
+      PetscInt    requested = 7;
+      PetscBool   set       = PETSC_FALSE;
+      check_petsc(PetscOptionsGetInt(nullptr, nullptr, "-mat_mumps_icntl_7", &requested, &set),
+                  "PetscOptionsGetInt");
+      if (warned || !set || requested == 7)
+        return;
+      PetscInt used = requested;
+      check_petsc(MatMumpsGetInfog(F, 7, &used), "MatMumpsGetInfog");
+      if (used != requested && Utilities::MPI::this_mpi_process(comm) == 0)
+        std::cout << "Warning: subsection \"Linear solver\", \"MUMPS ordering\": this "
+                  << "MUMPS cannot use " << ordering_name(requested) << " and uses "
+                  << ordering_name(used) << " instead." << std::endl;
+      warned = true;
+    }
   } // namespace
 
 
@@ -104,7 +131,7 @@ namespace softopt
                          ordering == "AMD"   ? "0" :
                                                "7";
     check_petsc(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_7", icntl7),
-          "PetscOptionsSetValue");
+                "PetscOptionsSetValue");
     return parameters;
   }
 
@@ -146,7 +173,7 @@ namespace softopt
         check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
         check_petsc(PCSetType(pc, PCCHOLESKY), "PCSetType");
         check_petsc(PCFactorSetMatSolverType(pc, MATSOLVERMUMPS),
-              "PCFactorSetMatSolverType");
+                    "PCFactorSetMatSolverType");
         check_petsc(KSPSetOperators(ksp, A, A), "KSPSetOperators");
         check_petsc(PCFactorSetUpMatSolverType(pc), "PCFactorSetUpMatSolverType");
         Mat F;
@@ -166,13 +193,13 @@ namespace softopt
     check_petsc(KSPSetUp(ksp), "KSPSetUp");
     check_petsc(KSPSetReusePreconditioner(ksp, PETSC_TRUE), "KSPSetReusePreconditioner");
     ++factorizations;
-    if (factorizations == 1)
-      warn_if_ordering_replaced();
 
     PC  pc;
     Mat F;
     check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
     check_petsc(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
+    if (factorizations == 1)
+      warn_if_ordering_replaced(F, comm);
     PetscInt info = 0, info2 = 0;
     check_petsc(MatMumpsGetInfog(F, 1, &info), "MatMumpsGetInfog");
     check_petsc(MatMumpsGetInfog(F, 2, &info2), "MatMumpsGetInfog");
@@ -184,33 +211,6 @@ namespace softopt
                         (info == -9 || info == -8 ?
                            " (MUMPS ran out of working space)" :
                            ""));
-  }
-
-
-
-  void
-  DirectSolver::warn_if_ordering_replaced() const
-  {
-    // MUMPS falls back to its default ordering, silently, when it was built
-    // without the one asked for (Debian's has neither METIS nor SCOTCH).
-    static bool warned = false;
-    PetscInt    requested = 7;
-    PetscBool   set       = PETSC_FALSE;
-    check_petsc(PetscOptionsGetInt(nullptr, nullptr, "-mat_mumps_icntl_7", &requested, &set),
-                "PetscOptionsGetInt");
-    if (warned || !set || requested == 7)
-      return;
-    PC       pc;
-    Mat      F;
-    PetscInt used = requested;
-    check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
-    check_petsc(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
-    check_petsc(MatMumpsGetInfog(F, 7, &used), "MatMumpsGetInfog");
-    if (used != requested && Utilities::MPI::this_mpi_process(comm) == 0)
-      std::cout << "Warning: subsection \"Linear solver\", \"MUMPS ordering\": this "
-                << "MUMPS cannot use " << ordering_name(requested) << " and uses "
-                << ordering_name(used) << " instead." << std::endl;
-    warned = true;
   }
 
 
@@ -271,9 +271,9 @@ namespace softopt
         check_petsc(KSPSetType(krylov, KSPGMRES), "KSPSetType");
         // Right preconditioning: GMRES minimizes the true residual b - K x.
         check_petsc(KSPSetPCSide(krylov, PC_RIGHT), "KSPSetPCSide");
-        check_petsc(KSPGMRESSetOrthogonalization(
-                krylov, KSPGMRESModifiedGramSchmidtOrthogonalization),
-              "KSPGMRESSetOrthogonalization");
+        check_petsc(KSPGMRESSetOrthogonalization(krylov,
+                                                 KSPGMRESModifiedGramSchmidtOrthogonalization),
+                    "KSPGMRESSetOrthogonalization");
         PC pc;
         check_petsc(KSPGetPC(krylov, &pc), "KSPGetPC");
         check_petsc(PCSetType(pc, PCSHELL), "PCSetType");
@@ -298,7 +298,7 @@ namespace softopt
         const unsigned int remaining = max_iterations - iterations;
         check_petsc(KSPGMRESSetRestart(krylov, remaining), "KSPGMRESSetRestart");
         check_petsc(KSPSetTolerances(krylov, 0., goal, PETSC_DEFAULT, remaining),
-              "KSPSetTolerances");
+                    "KSPSetTolerances");
         check_petsc(KSPSolve(krylov, b, x), "KSPSolve");
         KSPConvergedReason reason;
         PetscInt           cycle_iterations = 0;

@@ -114,11 +114,6 @@ namespace softopt
     n_factorizations() const;
 
   private:
-    /** Says once per run if MUMPS used another ordering than the one of
-     * "MUMPS ordering" (one its build lacks). */
-    void
-    warn_if_ordering_replaced() const;
-
     MPI_Comm     comm;
     KSP          ksp = nullptr;
     Mat          analyzed_matrix = nullptr;
