@@ -9,6 +9,7 @@
 
 #include <softopt/shape/fictitious_material.h>
 #include <softopt/shape/shape_filter.h>
+#include <softopt/solvers/petsc_check.h>
 #include <softopt/solvers/refactorization_rule.h>
 
 #include <algorithm>
@@ -18,6 +19,55 @@
 
 namespace softopt
 {
+  namespace
+  {
+    /** Read access to a ghosted vector's locally stored entries by
+     * position (ShapeFilter::CellData::local): one PETSc call for the
+     * whole vector instead of one per cell. */
+    class LocalEntries
+    {
+    public:
+      explicit LocalEntries(const PETScWrappers::MPI::Vector &v)
+        : vector(v)
+      {
+        check_petsc(VecGhostGetLocalForm(vector, &local), "VecGhostGetLocalForm");
+        check_petsc(VecGetArrayRead(local != nullptr ? local : vector, &entries),
+                    "VecGetArrayRead");
+        check_petsc(VecGetLocalSize(local != nullptr ? local : vector, &n_entries),
+                    "VecGetLocalSize");
+      }
+
+      ~LocalEntries()
+      {
+        VecRestoreArrayRead(local != nullptr ? local : vector, &entries);
+        VecGhostRestoreLocalForm(vector, &local);
+      }
+
+      LocalEntries(const LocalEntries &) = delete;
+      LocalEntries &
+      operator=(const LocalEntries &) = delete;
+
+      /** The entries at @p positions. */
+      void
+      extract(const std::vector<unsigned int> &positions, std::vector<double> &values) const
+      {
+        for (unsigned int i = 0; i < positions.size(); ++i)
+          {
+            AssertIndexRange(positions[i], n_entries);
+            values[i] = entries[positions[i]];
+          }
+      }
+
+    private:
+      Vec                vector;
+      Vec                local   = nullptr;
+      const PetscScalar *entries = nullptr;
+      PetscInt           n_entries = 0;
+    };
+  } // namespace
+
+
+
   void
   ShapeFilter::declare_parameters(ParameterHandler &prm)
   {
@@ -149,32 +199,44 @@ namespace softopt
                           update_gradients | update_JxW_values);
     FullMatrix<double>                   cell_mass(n, n);
     std::vector<types::global_dof_index> dof_indices(n);
-    cell_geometry.clear();
+    // A ghosted vector stores its owned entries, then its ghosts in the
+    // order of relevant \ owned.
+    IndexSet ghosts = relevant;
+    ghosts.subtract_set(owned);
+    cells.clear();
     volume = 0;
     for (const auto &cell : dofs.active_cell_iterators())
       if (cell->is_locally_owned())
         {
           fe_values.reinit(cell);
-          CellGeometry geometry{fe_values.get_JxW_values(),
-                                std::vector<Tensor<1, 3>>(n_q * n_functions)};
+          CellData data{fe_values.get_JxW_values(),
+                        std::vector<Tensor<1, 3>>(n_q * n_functions),
+                        {},
+                        std::vector<unsigned int>(n),
+                        cell->active_cell_index()};
           for (unsigned int q = 0; q < n_q; ++q)
             for (unsigned int b = 0; b < n_functions; ++b)
-              geometry.grad[q * n_functions + b] =
+              data.grad[q * n_functions + b] =
                 fe_values.shape_grad(dof_of_function[b], q);
           cell_mass = 0;
           for (unsigned int q = 0; q < n_q; ++q)
             {
-              volume += geometry.JxW[q];
+              volume += data.JxW[q];
               for (unsigned int i = 0; i < n; ++i)
                 for (unsigned int j = 0; j < n; ++j)
                   if (component_function[i].first == component_function[j].first)
                     cell_mass(i, j) += shape_values[q][component_function[i].second] *
                                        shape_values[q][component_function[j].second] *
-                                       geometry.JxW[q];
+                                       data.JxW[q];
             }
           cell->get_dof_indices(dof_indices);
           mass_matrix.add(dof_indices, cell_mass);
-          cell_geometry.push_back(std::move(geometry));
+          data.rows = petsc_rows(dof_indices, constraints);
+          for (unsigned int i = 0; i < n; ++i)
+            data.local[i] = owned.is_element(dof_indices[i]) ?
+                              owned.index_within_set(dof_indices[i]) :
+                              owned.n_elements() + ghosts.index_within_set(dof_indices[i]);
+          cells.push_back(std::move(data));
         }
     mass_matrix.compress(VectorOperation::add);
     volume = Utilities::MPI::sum(volume, comm);
@@ -193,9 +255,8 @@ namespace softopt
     const unsigned int     n_functions = shape_values[0].size();
     FullMatrix<double>     cell_matrix(n, n);
     dealii::Vector<double> cell_residual(n);
-    std::vector<types::global_dof_index> dof_indices(n);
-    std::vector<double>                  psi_local(n), d_local(n);
-    std::vector<Tensor<2, 3>>            T(n);
+    std::vector<double>    psi_local(n), d_local(n), gap_local(n);
+    std::vector<Tensor<2, 3>> T(n);
 
     Vector r(dofs.locally_owned_dofs(), dofs.get_communicator());
     VecSetOption(r, VEC_IGNORE_NEGATIVE_INDICES, PETSC_TRUE);
@@ -204,73 +265,74 @@ namespace softopt
         matrix = 0;
         scatter.begin(matrix);
       }
-    double       diagonal_sum = 0;
-    bool         inverted = false;
-    unsigned int index    = 0;
-    for (const auto &cell : dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const CellGeometry &geometry = cell_geometry[index++];
-          cell->get_dof_indices(dof_indices);
-          psi_g.extract_subvector_to(dof_indices.begin(), dof_indices.end(), psi_local.begin());
-          d_g.extract_subvector_to(dof_indices.begin(), dof_indices.end(), d_local.begin());
-          cell_matrix   = 0;
-          cell_residual = 0;
-          for (unsigned int q = 0; q < geometry.JxW.size(); ++q)
-            {
-              const Tensor<2, 3> F =
-                unit_symmetric_tensor<3>() + gradient(geometry, q, psi_local);
-              if (!(determinant(F) > 0))
-                {
-                  inverted = true;
-                  break;
-                }
-              // 1/2 from the potential (Eq. PDEpot01).
-              const Tensor<2, 3> P = 0.5 * material.first_piola(F);
-              const Tensor<1, 3> gap =
-                (value(q, psi_local) - value(q, d_local)) / volume;
-              const double  JxW  = geometry.JxW[q];
-              const auto   *grad = &geometry.grad[q * n_functions];
-              const double *N    = shape_values[q].data();
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  const auto [c, b] = component_function[i];
-                  cell_residual(i) += (P[c] * grad[b] + gap[c] * N[b]) * JxW;
-                }
-              if (!with_tangent)
-                continue;
-              // grad N_i : A : grad N_j through T_j = A : (e_{c_j} (x) g_j),
-              // and the mass term N_i N_j / |Omega_o| on the diagonal blocks.
-              const Tensor<4, 3> A = 0.5 * material.tangent(F);
-              for (unsigned int j = 0; j < n; ++j)
-                {
-                  const auto [c, b] = component_function[j];
-                  for (unsigned int k = 0; k < 3; ++k)
-                    for (unsigned int l = 0; l < 3; ++l)
-                      T[j][k][l] = A[k][l][c] * grad[b];
-                }
-              for (unsigned int i = 0; i < n; ++i)
-                {
-                  const auto [c_i, b_i] = component_function[i];
-                  const double N_i      = N[b_i] / volume;
-                  for (unsigned int j = 0; j < n; ++j)
-                    {
-                      const auto [c_j, b_j] = component_function[j];
-                      cell_matrix(i, j) +=
-                        (T[j][c_i] * grad[b_i] + (c_i == c_j ? N_i * N[b_j] : 0.)) * JxW;
-                    }
-                }
-            }
-          const std::vector<PetscInt> rows = petsc_rows(dof_indices, constraints);
-          AssertThrow(VecSetValues(r, n, rows.data(), cell_residual.data(), ADD_VALUES) == 0,
-                      ExcInternalError());
-          if (with_tangent)
-            {
-              scatter.add(cell->active_cell_index(), rows, &cell_matrix(0, 0));
-              for (unsigned int i = 0; i < n; ++i)
-                diagonal_sum += std::abs(cell_matrix(i, i));
-            }
-        }
+    const LocalEntries psi_entries(psi_g), d_entries(d_g);
+    double             diagonal_sum = 0;
+    bool               inverted     = false;
+    for (const CellData &cell : cells)
+      {
+        psi_entries.extract(cell.local, psi_local);
+        d_entries.extract(cell.local, d_local);
+        for (unsigned int i = 0; i < n; ++i)
+          gap_local[i] = psi_local[i] - d_local[i];
+        cell_matrix   = 0;
+        cell_residual = 0;
+        for (unsigned int q = 0; q < cell.JxW.size(); ++q)
+          {
+            const Tensor<2, 3> F =
+              unit_symmetric_tensor<3>() + gradient(cell, q, psi_local);
+            if (!(determinant(F) > 0))
+              {
+                inverted = true;
+                break;
+              }
+            // 1/2 from the potential (Eq. PDEpot01).
+            const Tensor<2, 3> P    = 0.5 * material.first_piola(F);
+            const Tensor<1, 3> gap  = value(q, gap_local) / volume;
+            const double       JxW  = cell.JxW[q];
+            const auto        *grad = &cell.grad[q * n_functions];
+            const double      *N    = shape_values[q].data();
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const auto [c, b] = component_function[i];
+                cell_residual(i) += (P[c] * grad[b] + gap[c] * N[b]) * JxW;
+              }
+            if (!with_tangent)
+              continue;
+            // grad N_i : A : grad N_j through T_j = A : (e_{c_j} (x) g_j) JxW,
+            // and the mass term N_i N_j / |Omega_o| on the diagonal blocks;
+            // the upper triangle only (A has major symmetry), mirrored below.
+            const Tensor<4, 3> A = (0.5 * JxW) * material.tangent(F);
+            for (unsigned int j = 0; j < n; ++j)
+              {
+                const auto [c, b] = component_function[j];
+                for (unsigned int k = 0; k < 3; ++k)
+                  for (unsigned int l = 0; l < 3; ++l)
+                    T[j][k][l] = A[k][l][c] * grad[b];
+              }
+            for (unsigned int i = 0; i < n; ++i)
+              {
+                const auto [c_i, b_i] = component_function[i];
+                const double N_i      = N[b_i] * JxW / volume;
+                for (unsigned int j = i; j < n; ++j)
+                  {
+                    const auto [c_j, b_j] = component_function[j];
+                    cell_matrix(i, j) +=
+                      T[j][c_i] * grad[b_i] + (c_i == c_j ? N_i * N[b_j] : 0.);
+                  }
+              }
+          }
+        AssertThrow(VecSetValues(r, n, cell.rows.data(), cell_residual.data(), ADD_VALUES) == 0,
+                    ExcInternalError());
+        if (with_tangent)
+          {
+            for (unsigned int i = 0; i < n; ++i)
+              for (unsigned int j = 0; j < i; ++j)
+                cell_matrix(i, j) = cell_matrix(j, i);
+            scatter.add(cell.active_index, cell.rows, &cell_matrix(0, 0));
+            for (unsigned int i = 0; i < n; ++i)
+              diagonal_sum += std::abs(cell_matrix(i, i));
+          }
+      }
     if (with_tangent)
       {
         scatter.end();
@@ -407,48 +469,45 @@ namespace softopt
     const Vector         psi_g = design->ghosted(psi);
     Vector               X     = design->initial_coordinates();
     X += psi;
-    const Vector                         X_g = design->ghosted(X);
-    const unsigned int                   n   = component_function.size();
-    std::vector<types::global_dof_index> dof_indices(n);
-    std::vector<double>                  psi_local(n);
-    Result                               result;
-    bool                                 has_cells = false;
-    unsigned int                         index     = 0;
-    for (const auto &cell : dofs.active_cell_iterators())
-      if (cell->is_locally_owned())
-        {
-          const CellGeometry &geometry = cell_geometry[index++];
-          cell->get_dof_indices(dof_indices);
-          psi_g.extract_subvector_to(dof_indices.begin(), dof_indices.end(), psi_local.begin());
-          for (unsigned int q = 0; q < geometry.JxW.size(); ++q)
-            result.min_J_psi =
-              std::min(result.min_J_psi,
-                       determinant(unit_symmetric_tensor<3>() +
-                                   gradient(geometry, q, psi_local)));
+    const Vector        X_g = design->ghosted(X);
+    const unsigned int  n   = component_function.size();
+    std::vector<double> psi_local(n), X_local(n);
+    Result              result;
+    bool                has_cells = false;
+    const LocalEntries  psi_entries(psi_g), X_entries(X_g);
+    for (const CellData &cell : cells)
+      {
+        psi_entries.extract(cell.local, psi_local);
+        X_entries.extract(cell.local, X_local);
+        for (unsigned int q = 0; q < cell.JxW.size(); ++q)
+          result.min_J_psi =
+            std::min(result.min_J_psi,
+                     determinant(unit_symmetric_tensor<3>() +
+                                 gradient(cell, q, psi_local)));
 
-          // Mean ratio of the tetrahedron through the corner nodes of X:
-          // 12 (3 V)^(2/3) / sum of squared edge lengths, 1 if equilateral.
-          std::array<Point<3>, 4> p;
-          for (unsigned int i = 0; i < n; ++i)
-            {
-              const auto [c, node] = component_function[i];
-              if (node < 4)
-                p[node][c] = X_g(dof_indices[i]);
-            }
-          const double V = ((p[1] - p[0]) * cross_product_3d(p[2] - p[0], p[3] - p[0])) / 6.;
-          double edges = 0;
-          for (unsigned int a = 0; a < 4; ++a)
-            for (unsigned int b = a + 1; b < 4; ++b)
-              edges += (p[a] - p[b]).norm_square();
-          const double quality =
-            V > 0 ? 12. * std::pow(3. * V, 2. / 3.) / edges : V;
-          has_cells = true;
-          if (quality < result.worst_quality)
-            {
-              result.worst_quality = quality;
-              result.worst_element = 0.25 * (p[0] + p[1] + p[2] + p[3]);
-            }
-        }
+        // Mean ratio of the tetrahedron through the corner nodes of X:
+        // 12 (3 V)^(2/3) / sum of squared edge lengths, 1 if equilateral.
+        std::array<Point<3>, 4> p;
+        for (unsigned int i = 0; i < n; ++i)
+          {
+            const auto [c, node] = component_function[i];
+            if (node < 4)
+              p[node][c] = X_local[i];
+          }
+        const double V = ((p[1] - p[0]) * cross_product_3d(p[2] - p[0], p[3] - p[0])) / 6.;
+        double edges = 0;
+        for (unsigned int a = 0; a < 4; ++a)
+          for (unsigned int b = a + 1; b < 4; ++b)
+            edges += (p[a] - p[b]).norm_square();
+        const double quality =
+          V > 0 ? 12. * std::pow(3. * V, 2. / 3.) / edges : V;
+        has_cells = true;
+        if (quality < result.worst_quality)
+          {
+            result.worst_quality = quality;
+            result.worst_element = 0.25 * (p[0] + p[1] + p[2] + p[3]);
+          }
+      }
     const MPI_Comm comm = dofs.get_communicator();
     result.min_J_psi    = Utilities::MPI::min(result.min_J_psi, comm);
     // The worst element's quality and rank, then its centroid from there.
@@ -476,7 +535,7 @@ namespace softopt
 
 
   Tensor<2, 3>
-  ShapeFilter::gradient(const CellGeometry        &cell,
+  ShapeFilter::gradient(const CellData            &cell,
                         const unsigned int         q,
                         const std::vector<double> &v) const
   {

@@ -179,8 +179,7 @@ namespace softopt
       unsigned int n_solves          = 0;
       unsigned int n_residuals       = 0;
       /** GMRES iterations on kept factorizations (each one solve with
-       * it; forming the solution takes one more per GMRES cycle, which
-       * n_solves does not count). */
+       * it; flexible GMRES forms the solution without another). */
       unsigned int n_krylov_iterations = 0;
       double       assembly_time      = 0;
       double       factorization_time = 0;

@@ -111,28 +111,36 @@ namespace softopt
     quadrature();
 
     /**
-     * What the filter's integrals need of Omega_o at the quadrature points
-     * of a locally owned cell: JxW and the gradients of the ten scalar P2
-     * shape functions. Omega_o is fixed between mesh updates, so setup()
-     * computes them once (the MappingFEField on X_o costs about 40 % of a
-     * residual otherwise).
+     * What the filter's loops need of a locally owned cell, found once per
+     * mesh by setup(): JxW and the gradients of the ten scalar P2 shape
+     * functions on Omega_o (fixed between mesh updates; the MappingFEField
+     * on X_o costs about 40 % of a residual otherwise), and where the
+     * cell's DoFs are (deal.II's and PETSc's look-ups per cell cost as
+     * much as a residual's arithmetic).
      */
-    struct CellGeometry
+    struct CellData
     {
       std::vector<double>       JxW;
       std::vector<Tensor<1, 3>> grad; // [q * 10 + scalar function]
+      /** PETSc rows of the DoFs, -1 where psi is fixed (petsc_rows). */
+      std::vector<PetscInt> rows;
+      /** Positions of the DoFs in a ghosted vector's local form: the
+       * locally owned entries, then the ghosts (LocalEntries). */
+      std::vector<unsigned int> local;
+      /** The cell's active_cell_index(), CellMatrixScatter's key. */
+      unsigned int active_index;
     };
 
     /** grad v at quadrature point @p q of a cell from its DoF values. */
     Tensor<2, 3>
-    gradient(const CellGeometry &cell, const unsigned int q, const std::vector<double> &v) const;
+    gradient(const CellData &cell, const unsigned int q, const std::vector<double> &v) const;
 
     /** v at quadrature point @p q of a cell from its DoF values. */
     Tensor<1, 3>
     value(const unsigned int q, const std::vector<double> &v) const;
 
-    /** Per locally owned cell, in the order of active_cell_iterators(). */
-    std::vector<CellGeometry> cell_geometry;
+    /** Per locally owned cell. */
+    std::vector<CellData> cells;
     /** The scalar shape functions' values [q][function], the same on every
      * cell. */
     std::vector<std::vector<double>> shape_values;
