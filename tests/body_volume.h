@@ -25,7 +25,9 @@ namespace softopt_tests
     for (const auto &cell : design.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
+          // A Triangulation cell: fe is not the DoFHandler's element (only
+          // the mapping matters for JxW).
+          fe_values.reinit(Triangulation<3>::cell_iterator(cell));
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             volume += fe_values.JxW(q);
         }

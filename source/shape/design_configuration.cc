@@ -148,7 +148,9 @@ namespace softopt
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         {
-          fe_values.reinit(cell);
+          // A Triangulation cell: scalar is not the DoFHandler's element
+          // (only the mapping matters for J).
+          fe_values.reinit(Triangulation<3>::cell_iterator(cell));
           for (unsigned int q = 0; q < quadrature.size(); ++q)
             J_min = std::min(J_min, fe_values.jacobian(q).determinant());
         }

@@ -30,16 +30,16 @@ namespace softopt
       explicit LocalEntries(const PETScWrappers::MPI::Vector &v)
         : vector(v)
       {
+        // A vector without ghosts has no local form: its own array then.
         check_petsc(VecGhostGetLocalForm(vector, &local), "VecGhostGetLocalForm");
-        check_petsc(VecGetArrayRead(local != nullptr ? local : vector, &entries),
-                    "VecGetArrayRead");
-        check_petsc(VecGetLocalSize(local != nullptr ? local : vector, &n_entries),
-                    "VecGetLocalSize");
+        stored = local != nullptr ? local : vector;
+        check_petsc(VecGetArrayRead(stored, &entries), "VecGetArrayRead");
+        check_petsc(VecGetLocalSize(stored, &n_entries), "VecGetLocalSize");
       }
 
       ~LocalEntries()
       {
-        VecRestoreArrayRead(local != nullptr ? local : vector, &entries);
+        VecRestoreArrayRead(stored, &entries);
         VecGhostRestoreLocalForm(vector, &local);
       }
 
@@ -60,8 +60,9 @@ namespace softopt
 
     private:
       Vec                vector;
-      Vec                local   = nullptr;
-      const PetscScalar *entries = nullptr;
+      Vec                local     = nullptr;
+      Vec                stored    = nullptr; // local, or vector itself
+      const PetscScalar *entries   = nullptr;
       PetscInt           n_entries = 0;
     };
   } // namespace
