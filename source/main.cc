@@ -101,18 +101,18 @@ main(int argc, char **argv)
           file = args[0];
         }
 
-      softopt::Settings settings(file);
+      const softopt::Settings settings(file);
       if (command.empty())
         command = settings.command;
       if (command == "check-gradients")
-        return softopt::run_gradient_check(settings);
+        return softopt::run_gradient_check(settings, MPI_COMM_WORLD);
       AssertThrow(!restart || command == "optimize",
                   dealii::ExcMessage("--restart continues \"optimize\" only, "
                                      "but the command is \"" + command +
                                      "\".\n" + usage));
       if (command == "optimize")
-        return softopt::run_optimization(settings, restart);
-      return softopt::run_analysis(settings);
+        return softopt::run_optimization(settings, restart, MPI_COMM_WORLD);
+      return softopt::run_analysis(settings, MPI_COMM_WORLD);
     }
   catch (const dealii::ExceptionBase &e)
     {

@@ -83,8 +83,8 @@ namespace
     geometry.mesh_size       = h;
     geometry.mesh_parameters = parameters;
     parallel::fullydistributed::Triangulation<3> triangulation(MPI_COMM_WORLD);
-    geometry.create_triangulation(triangulation);
-    const softopt::DesignConfiguration design(triangulation, geometry);
+    const softopt::DesignConfiguration design(triangulation,
+                                             geometry.create_triangulation(triangulation));
 
     const std::string file = name + ".stl";
     softopt::write_design_stl(design, file);

@@ -28,9 +28,8 @@ main(int argc, char **argv)
   geometry.dirichlet_boundaries  = {{1, {{true, true, true}}}};
   geometry.pressure_boundary_ids = {2};
   geometry.design_boundary_ids   = {3};
-  geometry.create_triangulation(triangulation);
-
-  const softopt::DesignConfiguration design(triangulation, geometry);
+  const softopt::DesignConfiguration design(triangulation,
+                                           geometry.create_triangulation(triangulation));
   const auto material = neo_hookean(1.2, 0.49);
   const double                       p_hat = 0.015;
   softopt::HyperelasticProblem       problem(

@@ -21,13 +21,14 @@ main(int argc, char **argv)
   TestLog                          log;
 
   softopt::Settings      settings(SOURCE_DIR "/inputs/sphere_design.prm");
-  softopt::DesignProblem problem(settings);
+  softopt::DesignProblem problem(settings, MPI_COMM_WORLD);
   problem.add_cavity_volume();
   const auto &functionals = problem.functionals();
 
-  const auto d0        = problem.create_design_vector();
-  const auto values    = problem.evaluate(d0);
-  const auto gradients = problem.gradients();
+  softopt::DesignIterate x         = problem.initial_iterate();
+  const auto             d0        = x.d;
+  const auto             values    = problem.evaluate(x);
+  const auto             gradients = problem.gradients(x);
 
   auto direction = problem.create_design_vector();
   for (const auto i : direction.locally_owned_elements())
@@ -39,9 +40,9 @@ main(int argc, char **argv)
   std::vector<std::vector<double>> taylor(functionals.size());
   for (const double h : steps)
     {
-      auto d = d0;
-      d.add(h * scale, direction);
-      const auto at = problem.evaluate(d);
+      x.d = d0;
+      x.d.add(h * scale, direction);
+      const auto at = problem.evaluate(x);
       for (unsigned int k = 0; k < functionals.size(); ++k)
         taylor[k].push_back(
           std::abs(at[k] - values[k] - h * scale * (gradients[k] * direction)));
@@ -62,11 +63,12 @@ main(int argc, char **argv)
     }
 
   // Warm start from another design, back at d0.
-  auto d1 = d0;
-  d1.add(0.5 * scale, direction);
-  problem.evaluate(d1);
-  problem.evaluate(d0);
-  const auto warm = problem.gradients();
+  x.d = d0;
+  x.d.add(0.5 * scale, direction);
+  problem.evaluate(x);
+  x.d = d0;
+  problem.evaluate(x);
+  const auto warm = problem.gradients(x);
   deallog << "warm start: " << (problem.path_report().warm_started ? "yes" : "no")
           << std::endl;
   for (unsigned int k = 0; k < functionals.size(); ++k)

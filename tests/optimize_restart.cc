@@ -8,7 +8,7 @@
 // update ("Remesh below quality" = 1): the restart reads the mesh of
 // iteration 6 that the checkpoint names.
 
-#include <softopt/app/output_directory.h>
+#include <softopt/io/output_directory.h>
 #include <softopt/app/settings.h>
 #include <softopt/optimization/checkpoint.h>
 #include <softopt/optimization/shape_optimizer.h>
@@ -30,18 +30,19 @@ namespace
   {
     softopt::Settings settings(SOURCE_DIR "/inputs/sphere_design.prm");
     settings.optimization.remesh_quality      = remesh_quality;
-    if (restart) // as softopt optimize --restart
-      softopt::Checkpoint::select_mesh(directory, settings.geometry.mesh_file);
     settings.output_directory                 = directory;
-    settings.print_timings                    = false;
+    settings.output.print_timings             = false;
     settings.optimization.maximum_iterations  = iterations;
     settings.optimization.mesh_update_interval = 3;
     settings.optimization.checkpoint_interval  = 2;
     settings.optimization.output_interval      = 0;
     settings.optimization.move_limit           = 0.1;
-    softopt::DesignProblem        problem(settings);
+    // As softopt optimize --restart: on the checkpoint's mesh.
+    softopt::DesignProblem problem(settings,
+                                   MPI_COMM_WORLD,
+                                   restart ? softopt::Checkpoint::mesh_file(directory) : "");
     const softopt::OutputDirectory out(settings.output_directory, MPI_COMM_WORLD);
-    softopt::ShapeOptimizer        optimizer(settings, problem, out);
+    softopt::ShapeOptimizer optimizer(settings.optimization, settings.output, problem, out);
     std::cout.setstate(std::ios::failbit); // the per-iteration lines
     optimizer.run(restart);
     std::cout.clear();

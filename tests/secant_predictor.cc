@@ -21,18 +21,19 @@ namespace
   std::pair<std::map<double, Vector>, softopt::DesignProblem::PathReport>
   states_at_d2(softopt::Settings &settings, const double s)
   {
-    softopt::DesignProblem problem(settings);
+    softopt::DesignProblem problem(settings, MPI_COMM_WORLD);
+    softopt::DesignIterate x         = problem.initial_iterate();
     auto                   direction = problem.create_design_vector();
     for (const auto i : direction.locally_owned_elements())
       direction(i) = random(i, 5);
     direction.compress(VectorOperation::insert);
     for (const double step : {0., 1., 2.})
       {
-        auto d = problem.create_design_vector();
-        d.add(step * s, direction);
-        problem.evaluate(d);
+        x.d = 0;
+        x.d.add(step * s, direction);
+        problem.evaluate(x);
       }
-    return {problem.target_states(), problem.path_report()};
+    return {x.states, problem.path_report()};
   }
 } // namespace
 

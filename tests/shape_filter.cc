@@ -17,8 +17,10 @@ main(int argc, char **argv)
   TestLog                          log;
 
   softopt::Settings      settings(SOURCE_DIR "/inputs/sphere_design.prm");
-  softopt::DesignProblem problem(settings);
-  softopt::ShapeFilter  &filter = settings.shape_filter;
+  softopt::DesignProblem problem(settings, MPI_COMM_WORLD);
+  // A filter of its own on the problem's design configuration.
+  softopt::ShapeFilter filter(settings.shape_filter);
+  filter.setup(problem.design_configuration(), settings.geometry);
 
   auto random_vector = [&](const double scale, const unsigned int seed) {
     PVector v = problem.create_design_vector();
@@ -55,14 +57,15 @@ main(int argc, char **argv)
 
   // A design, then a mesh update: the same geometry, the same functionals.
   problem.add_cavity_volume();
-  const PVector design_vector = random_vector(0.04, 4);
-  const auto   before        = problem.evaluate(design_vector);
+  softopt::DesignIterate x = problem.initial_iterate();
+  x.d                      = random_vector(0.04, 4);
+  const auto before        = problem.evaluate(x);
   const auto  &health        = problem.filter_result();
   deallog << "filter: " << health.iterations << " Newton iterations, min J_psi "
           << health.min_J_psi << ", worst element quality " << health.worst_quality
           << std::endl;
-  problem.update_mesh(design_vector);
-  const auto after = problem.evaluate(problem.create_design_vector());
+  problem.update_mesh(x);
+  const auto after = problem.evaluate(x);
   for (unsigned int k = 0; k < before.size(); ++k)
     deallog << problem.functionals()[k]->name() << " = " << before[k]
             << ", after the mesh update: relative change "

@@ -111,9 +111,8 @@ namespace softopt_tests
                                        {2, {{false, true, false}}},
                                        {3, {{false, false, true}}}};
       geometry.pressure_boundary_ids = {4};
-      geometry.create_triangulation(triangulation);
-      design  = std::make_unique<softopt::DesignConfiguration>(triangulation,
-                                                              geometry);
+      design = std::make_unique<softopt::DesignConfiguration>(
+        triangulation, geometry.create_triangulation(triangulation));
       problem = std::make_unique<softopt::HyperelasticProblem>(
         triangulation,
         design->get_mapping(),

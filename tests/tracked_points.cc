@@ -40,8 +40,8 @@ main(int argc, char **argv)
 
   softopt::Settings settings(SOURCE_DIR "/inputs/tracked_sphere.prm");
   parallel::fullydistributed::Triangulation<3> triangulation(comm);
-  settings.geometry.create_triangulation(triangulation);
-  const softopt::DesignConfiguration design(triangulation, settings.geometry);
+  const softopt::DesignConfiguration design(
+    triangulation, settings.geometry.create_triangulation(triangulation));
   softopt::HyperelasticProblem       problem(triangulation,
                                        design.get_mapping(),
                                        settings.geometry,
@@ -84,7 +84,7 @@ main(int argc, char **argv)
   const double A = 1., B = 2.;
   const double p_over_mu =
     settings.loading.pressure_kPa * 1e-3 / settings.material->shear_modulus;
-  const auto &names = settings.tracked_points;
+  const auto &names = settings.output.tracked_points;
   for (unsigned int r = 1; r < rows.size(); ++r)
     {
       const double lambda = std::stod(rows[r][1]);

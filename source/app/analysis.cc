@@ -3,7 +3,7 @@
 #include <deal.II/distributed/fully_distributed_tria.h>
 
 #include <softopt/app/analysis.h>
-#include <softopt/app/output_directory.h>
+#include <softopt/io/output_directory.h>
 #include <softopt/functionals/design_surface.h>
 #include <softopt/io/csv_writer.h>
 #include <softopt/io/pvd_series.h>
@@ -46,13 +46,13 @@ namespace softopt
   PathFollowing::Result
   follow_load_path(HyperelasticProblem                   &problem,
                    const DesignConfiguration             &design,
-                   Settings                              &settings,
+                   const Settings                        &settings,
                    const std::vector<const Functional *> &functionals,
                    const std::vector<double>             &targets,
                    const std::string                     &directory,
                    const ConditionalOStream              &pcout)
   {
-    const MPI_Comm comm = MPI_COMM_WORLD;
+    const MPI_Comm comm = problem.get_dof_handler().get_communicator();
     HyperelasticProblem::Vector a = problem.create_vector();
     const double initial_volume   = cavity_volume(problem, design, a);
 
@@ -76,11 +76,11 @@ namespace softopt
     // tracked on video (only if any are named).
     std::unique_ptr<TrackedPoints> tracked;
     std::unique_ptr<CsvWriter>     tracked_csv;
-    if (!settings.tracked_points.empty())
+    if (!settings.output.tracked_points.empty())
       {
         tracked = std::make_unique<TrackedPoints>(problem,
                                                   design,
-                                                  settings.tracked_points);
+                                                  settings.output.tracked_points);
         tracked->print(pcout);
         std::vector<std::string> tracked_columns{"step",
                                                  "load_factor",
@@ -122,8 +122,8 @@ namespace softopt
             tracked_row.push_back(entry);
           tracked_csv->add_row(tracked_row);
         }
-      if (settings.vtu_output == Settings::VtuOutput::every_step ||
-          (settings.vtu_output == Settings::VtuOutput::targets &&
+      if (settings.output.vtu_output == OutputParameters::VtuOutput::every_step ||
+          (settings.output.vtu_output == OutputParameters::VtuOutput::targets &&
            point.at_target))
         pvd.add(point.load_factor,
                 problem.write_vtu(state, directory, "solution", vtu_counter++));
@@ -141,7 +141,7 @@ namespace softopt
     };
 
     record({0, 0., 0, 0., false}, a);
-    const PathFollowing::Result result = settings.loading.run(
+    const PathFollowing::Result result = settings.loading.path.run(
       problem, settings.newton, targets, record, pcout);
     pcout << "Stopped: " << result.stop_reason << std::endl;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -152,16 +152,15 @@ namespace softopt
 
 
   int
-  run_analysis(Settings &settings)
+  run_analysis(const Settings &settings, const MPI_Comm comm)
   {
-    const MPI_Comm     comm = MPI_COMM_WORLD;
     ConditionalOStream pcout(std::cout,
                              Utilities::MPI::this_mpi_process(comm) == 0);
     Timer              setup_timer;
 
     parallel::fullydistributed::Triangulation<3> triangulation(comm);
-    settings.geometry.create_triangulation(triangulation);
-    const DesignConfiguration design(triangulation, settings.geometry);
+    const DesignConfiguration design(triangulation,
+                                     settings.geometry.create_triangulation(triangulation));
     HyperelasticProblem   problem(triangulation,
                                 design.get_mapping(),
                                 settings.geometry,
@@ -204,7 +203,7 @@ namespace softopt
                        out.path(),
                        pcout);
     path_timer.stop();
-    if (settings.print_timings)
+    if (settings.output.print_timings)
       {
         const auto &stats = problem.get_statistics();
         pcout << "Wall time: mesh and setup " << setup_time

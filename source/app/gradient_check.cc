@@ -1,7 +1,7 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <softopt/app/gradient_check.h>
-#include <softopt/app/output_directory.h>
+#include <softopt/io/output_directory.h>
 #include <softopt/io/csv_writer.h>
 #include <softopt/optimization/design_problem.h>
 
@@ -22,19 +22,21 @@ namespace softopt
       return 2. * (x - std::floor(x)) - 1.;
     }
 
-    /** Functional values at d0 + step dd, NaN where the design is refused. */
+    /** Functional values at d0 + step dd, NaN where the design is refused;
+     * @p x (warm starts) is then that design's. */
     std::vector<double>
     values_at(DesignProblem               &problem,
+              DesignIterate               &x,
               const DesignProblem::Vector &d0,
               const DesignProblem::Vector &dd,
               const double                 step,
               const ConditionalOStream    &pcout)
     {
-      DesignProblem::Vector d = d0;
-      d.add(step, dd);
+      x.d = d0;
+      x.d.add(step, dd);
       try
         {
-          return problem.evaluate(d);
+          return problem.evaluate(x);
         }
       catch (const ExceptionBase &e)
         {
@@ -50,17 +52,17 @@ namespace softopt
 
 
   int
-  run_gradient_check(Settings &settings)
+  run_gradient_check(const Settings &settings, const MPI_Comm comm)
   {
-    const MPI_Comm     comm = MPI_COMM_WORLD;
     ConditionalOStream pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0);
-    DesignProblem      problem(settings);
+    DesignProblem      problem(settings, comm);
     problem.add_cavity_volume();
     const auto &functionals = problem.functionals();
 
-    const DesignProblem::Vector d0        = problem.create_design_vector();
-    const std::vector<double>   values    = problem.evaluate(d0);
-    const auto                  gradients = problem.gradients();
+    DesignIterate               x         = problem.initial_iterate();
+    const DesignProblem::Vector d0        = x.d;
+    const std::vector<double>   values    = problem.evaluate(x);
+    const auto                  gradients = problem.gradients(x);
     pcout << "Gradient check at the initial design, design scale "
           << settings.optimization.design_bound << " mm:" << std::endl;
     for (unsigned int k = 0; k < functionals.size(); ++k)
@@ -89,7 +91,7 @@ namespace softopt
     // functional.
     std::vector<std::vector<double>> along_random;
     for (const double h : steps)
-      along_random.push_back(values_at(problem, d0, random, h * scale, pcout));
+      along_random.push_back(values_at(problem, x, d0, random, h * scale, pcout));
 
     for (unsigned int direction = 0; direction < 2; ++direction)
       for (unsigned int k = 0; k < functionals.size(); ++k)
@@ -107,7 +109,7 @@ namespace softopt
               const double              h  = steps[i];
               const std::vector<double> at = direction == 0 ?
                                                along_random[i] :
-                                               values_at(problem, d0, dd, h * scale, pcout);
+                                               values_at(problem, x, d0, dd, h * scale, pcout);
               const double fd     = std::abs(at[k] - values[k]);
               const double taylor = std::abs(at[k] - values[k] - h * scale * slope);
               remainders[k][direction].emplace_back(fd, taylor);

@@ -3,7 +3,8 @@
 
 #include <softopt/app/analysis.h>
 #include <softopt/app/optimization.h>
-#include <softopt/app/output_directory.h>
+#include <softopt/io/output_directory.h>
+#include <softopt/base/subprocess.h>
 #include <softopt/io/stl_writer.h>
 #include <softopt/io/tracked_points.h>
 #include <softopt/optimization/checkpoint.h>
@@ -11,6 +12,8 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 
 namespace softopt
 {
@@ -19,14 +22,16 @@ namespace softopt
     /** Runs scripts/plot_optimization on the output directory if Debian's
      * python3 with matplotlib is there; says so if not. */
     void
-    plot(const std::string &directory, const ConditionalOStream &pcout)
+    plot(const std::string        &directory,
+         const MPI_Comm            comm,
+         const ConditionalOStream &pcout)
     {
       const std::string script = SOFTOPT_SOURCE_DIR "/scripts/plot_optimization";
-      if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      if (Utilities::MPI::this_mpi_process(comm) != 0)
         return;
       const bool available =
         std::filesystem::exists(script) &&
-        std::system("/usr/bin/python3 -c 'import matplotlib' > /dev/null 2>&1") == 0;
+        run_program({"/usr/bin/python3", "-c", "import matplotlib"}, "/dev/null") == 0;
       if (!available)
         {
           pcout << "Plots skipped: they need /usr/bin/python3 with matplotlib "
@@ -34,25 +39,39 @@ namespace softopt
                 << script << std::endl;
           return;
         }
-      const std::string command =
-        "/usr/bin/python3 " + script + " '" + directory + "'";
-      if (std::system(command.c_str()) != 0)
-        pcout << "Plotting failed: " << command << std::endl;
+      // The directory is one argument: no shell reads it.
+      const std::vector<std::string> command{"/usr/bin/python3", script, directory};
+      const std::string              log = directory + "/plot.log";
+      const int     status = run_program(command, log);
+      std::ifstream     said(log);
+      const std::string text((std::istreambuf_iterator<char>(said)),
+                             std::istreambuf_iterator<char>());
+      pcout << text << std::flush;
+      said.close();
+      std::filesystem::remove(log);
+      if (status != 0)
+        pcout << "Plotting failed: " << command_line(command) << std::endl;
     }
   } // namespace
 
 
 
   int
-  run_optimization(Settings &settings, const bool restart)
+  run_optimization(const Settings &settings, const bool restart, const MPI_Comm comm)
   {
-    ConditionalOStream pcout(std::cout,
-                             Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0);
+    ConditionalOStream pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0);
     Timer timer;
+    const auto &functionals = settings.functionals;
+    AssertThrow(!functionals.empty() &&
+                  functionals.front()->kind() == Functional::Kind::objective,
+                ExcMessage(settings.input->path() +
+                           ": \"optimize\" needs at least one objective "
+                           "(subsection Objective 1)."));
     // A checkpoint written after a remesh lives on that mesh.
-    if (restart)
-      Checkpoint::select_mesh(settings.output_directory, settings.geometry.mesh_file);
-    DesignProblem problem(settings);
+    DesignProblem problem(settings,
+                          comm,
+                          restart ? Checkpoint::mesh_file(settings.output_directory) :
+                                    "");
     pcout << "Mesh: " << problem.hyperelastic_problem().get_dof_handler()
                            .get_triangulation()
                            .n_global_active_cells()
@@ -61,17 +80,17 @@ namespace softopt
           << " design variables" << std::endl;
     // The final analysis tracks these points on the final design; say now,
     // not hours later, where they land on the initial one.
-    if (!settings.tracked_points.empty())
+    if (!settings.output.tracked_points.empty())
       TrackedPoints(problem.hyperelastic_problem(),
                     problem.design_configuration(),
-                    settings.tracked_points)
+                    settings.output.tracked_points)
         .print(pcout);
 
     // Input is checked: only now touch the output directory.
-    const OutputDirectory out(settings.output_directory, MPI_COMM_WORLD);
+    const OutputDirectory out(settings.output_directory, comm);
     if (!restart)
       out.write_parameters(settings.prm);
-    ShapeOptimizer     optimizer(settings, problem, out);
+    ShapeOptimizer     optimizer(settings.optimization, settings.output, problem, out);
     const std::string  reason = optimizer.run(restart);
     pcout << "Stopped: " << reason << std::endl;
     out.write_text("stop_reason.txt", reason + "\n");
@@ -85,9 +104,9 @@ namespace softopt
 
     pcout << "\nForward analysis of the final design:" << std::endl;
     const std::string final_directory = out.file("final_analysis");
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
       std::filesystem::create_directories(final_directory);
-    MPI_Barrier(MPI_COMM_WORLD);
+    MPI_Barrier(comm);
     // The design's targets and equal steps (the path sorts out repeats).
     std::vector<double> targets = problem.target_load_factors();
     const unsigned int  n       = settings.optimization.final_analysis_steps;
@@ -100,8 +119,8 @@ namespace softopt
                                          targets,
                                          final_directory,
                                          pcout);
-    plot(out.path(), pcout);
-    if (settings.print_timings)
+    plot(out.path(), comm, pcout);
+    if (settings.output.print_timings)
       {
         // The unit of scripts/bench_iteration: one assembly plus one
         // numerical factorization of the physics (means over every mesh

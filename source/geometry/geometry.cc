@@ -10,10 +10,16 @@
 #include <softopt/geometry/geometry.h>
 #include <softopt/geometry/gmsh_mesh.h>
 
+#include <signal.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
+#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 namespace softopt
@@ -110,12 +116,57 @@ namespace softopt
                            "> is neither a .msh nor a .geo file."));
     AssertThrow(std::ifstream(mesh_file).good(),
                 ExcMessage(where_mesh + ": cannot read <" + mesh_file + ">."));
+
+    // gmsh sets only numbers its .geo declares (and ignores others).
+    if (!mesh_parameters.empty())
+      {
+        const std::string where = input.where("Geometry", "Mesh parameters");
+        AssertThrow(extension == ".geo",
+                    ExcMessage(where + ": numbers for gmsh need a .geo Mesh "
+                                       "file, not <" + mesh_file + ">."));
+        const auto known = geo_constants(mesh_file);
+        std::string list;
+        for (const auto &name : known)
+          list += (list.empty() ? "" : ", ") + name;
+        for (const auto &[name, value] : mesh_parameters)
+          AssertThrow(known.count(name) == 1 && name != "h",
+                      ExcMessage(where + ": <" + name + "> is " +
+                                 (name == "h" ? "set by \"Mesh size\"" :
+                                                "not declared by DefineConstant "
+                                                "in <" + mesh_file + ">, which "
+                                                "declares: " + list) + "."));
+      }
   }
 
 
 
+  namespace
+  {
+    /** Removes the temporary meshes softopt-<pid>-* of runs that no longer
+     * exist (killed before they could remove them). */
+    void
+    remove_stale_temporary_meshes(const std::filesystem::path &folder)
+    {
+      std::error_code error;
+      for (const auto &entry : std::filesystem::directory_iterator(folder, error))
+        {
+          const std::string name = entry.path().filename().string();
+          if (name.rfind("softopt-", 0) != 0)
+            continue;
+          const auto  end = name.find('-', 8);
+          const pid_t pid = std::atoi(name.substr(8, end - 8).c_str());
+          if (pid > 0 && ::kill(pid, 0) != 0 && errno == ESRCH)
+            std::filesystem::remove(entry.path(), error);
+        }
+    }
+  } // namespace
+
+
+
   std::string
-  Geometry::mesh_with_gmsh(const MPI_Comm comm) const
+  Geometry::mesh_with_gmsh(const MPI_Comm     comm,
+                           const std::string &mesh_file,
+                           const std::string &where_mesh) const
   {
     // Rank 0 writes gmsh's format 2.2 into a temporary file: a .geo meshed
     // with quadratic tetrahedra (midside nodes on the CAD surfaces), a .msh
@@ -123,21 +174,31 @@ namespace softopt
     std::string msh_file;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
+        remove_stale_temporary_meshes(std::filesystem::temp_directory_path());
         const auto tmp = std::filesystem::temp_directory_path() /
                          ("softopt-" + std::to_string(::getpid()) + "-" +
                           std::filesystem::path(mesh_file).stem().string());
         msh_file      = tmp.string() + ".msh";
         const bool geo = std::filesystem::path(mesh_file).extension() == ".geo";
-        std::ostringstream arguments;
-        arguments << (geo ? "-3 -order 2 " : "-0 ") << "-format msh22 ";
+        std::vector<std::string> arguments{geo ? "-3" : "-0"};
         if (geo)
           {
-            arguments << "-setnumber h " << mesh_size << " ";
+            for (const std::string a : {"-order", "2"})
+              arguments.push_back(a);
+            const auto set_number = [&](const std::string &name, const double value) {
+              std::ostringstream number;
+              number << std::setprecision(17) << value;
+              for (const std::string a : {std::string("-setnumber"), name, number.str()})
+                arguments.push_back(a);
+            };
+            set_number("h", mesh_size);
             for (const auto &[name, value] : mesh_parameters)
-              arguments << "-setnumber " << name << " " << value << " ";
+              set_number(name, value);
           }
-        arguments << "\"" << mesh_file << "\"";
-        const std::string error = run_gmsh(arguments.str(), msh_file);
+        for (const std::string a : {"-format", "msh22"})
+          arguments.push_back(a);
+        arguments.push_back(mesh_file);
+        const std::string error = run_gmsh(arguments, msh_file);
         if (!error.empty())
           msh_file = "gmsh failed on <" + mesh_file + "> " + error;
       }
@@ -149,17 +210,25 @@ namespace softopt
 
 
 
-  void
+  EdgeMidpoints
   Geometry::create_triangulation(
-    parallel::fullydistributed::Triangulation<3> &triangulation)
+    parallel::fullydistributed::Triangulation<3> &triangulation,
+    const std::string                            &file) const
   {
+    // A mesh other than the parameter file's (a new mesh of the design,
+    // named by a checkpoint) is named by itself in messages.
+    const std::string  mesh_file  = file.empty() ? this->mesh_file : file;
+    const std::string  where_mesh = mesh_file == this->mesh_file ?
+                                      this->where_mesh :
+                                      "The mesh <" + mesh_file + ">";
     const MPI_Comm     comm     = triangulation.get_communicator();
-    const std::string  msh_file = mesh_with_gmsh(comm);
+    const std::string  msh_file = mesh_with_gmsh(comm, mesh_file, where_mesh);
     const unsigned int rank     = Utilities::MPI::this_mpi_process(comm);
     const std::string  linear_file =
       msh_file + ".linear" + std::to_string(rank) + ".msh";
 
     Triangulation<3> serial;
+    EdgeMidpoints    edge_midpoints;
     std::string      error;
     try
       {
@@ -212,6 +281,7 @@ namespace softopt
 
     check_cavity_is_closed(serial);
     distribute(serial, triangulation);
+    return edge_midpoints;
   }
 
 
@@ -273,8 +343,9 @@ namespace softopt
 
 
   void
-  Geometry::initial_coordinates(const DoFHandler<3>        &dof_handler,
-                                PETScWrappers::MPI::Vector &coordinates) const
+  initial_coordinates(const DoFHandler<3>        &dof_handler,
+                      const EdgeMidpoints        &edge_midpoints,
+                      PETScWrappers::MPI::Vector &coordinates)
   {
     // Vertex DoFs of FE_SimplexP(2) come first, then one DoF per line.
     const FiniteElement<3> &fe = dof_handler.get_fe();

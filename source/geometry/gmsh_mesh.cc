@@ -1,10 +1,14 @@
 #include <deal.II/base/exceptions.h>
 
+#include <deal.II/base/utilities.h>
+
+#include <softopt/base/subprocess.h>
 #include <softopt/geometry/gmsh_mesh.h>
 
 #include <algorithm>
 #include <array>
 #include <cstdlib>
+#include <iterator>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -232,18 +236,77 @@ namespace softopt
 
 
   std::string
-  run_gmsh(const std::string &arguments, const std::string &output)
+  run_gmsh(std::vector<std::string> arguments, const std::string &output)
   {
-    const std::string  log = output + ".log";
-    const std::string  command =
-      "gmsh " + arguments + " -v 3 -o \"" + output + "\" > \"" + log + "\" 2>&1";
-    const int          status = std::system(command.c_str());
+    const std::string log = output + ".log";
+    arguments.insert(arguments.begin(), "gmsh");
+    for (const std::string a : {"-v", "3", "-o"})
+      arguments.push_back(a);
+    arguments.push_back(output);
+    const int          status = run_program(arguments, log);
     std::ifstream      log_in(log);
     std::ostringstream log_text;
     log_text << log_in.rdbuf();
     std::filesystem::remove(log);
     if (status == 0 && std::ifstream(output).good())
       return "";
-    return "(command: " + command + "):\n" + log_text.str();
+    if (status == 127 && log_text.str().empty())
+      log_text << "gmsh could not be started (apt-get install gmsh)\n";
+    return "(command: " + command_line(arguments) + "):\n" + log_text.str();
   }
+
+
+
+  std::set<std::string>
+  geo_constants(const std::string &geo_file)
+  {
+    std::ifstream in(geo_file);
+    AssertThrow(in, ExcMessage("Cannot read <" + geo_file + ">."));
+    std::string text((std::istreambuf_iterator<char>(in)),
+                     std::istreambuf_iterator<char>());
+    // Without comments and strings, which may hold brackets and commas.
+    std::string code;
+    for (std::size_t i = 0; i < text.size(); ++i)
+      if (text.compare(i, 2, "//") == 0)
+        i = std::min(text.find('\n', i), text.size()) - 1;
+      else if (text.compare(i, 2, "/*") == 0)
+        i = std::min(text.find("*/", i + 2), text.size() - 2) + 1;
+      else if (text[i] == '"')
+        i = std::min(text.find('"', i + 1), text.size());
+      else
+        code += text[i];
+
+    // DefineConstant[ name = value, name = {value, options}, ... ];
+    std::set<std::string> names;
+    const std::string     keyword = "DefineConstant";
+    for (auto at = code.find(keyword); at != std::string::npos;
+         at      = code.find(keyword, at + 1))
+      {
+        std::size_t i = code.find('[', at + keyword.size());
+        if (i == std::string::npos)
+          break;
+        int         depth = 0;
+        std::string item;
+        for (++i; i < code.size(); ++i)
+          {
+            const char c = code[i];
+            if ((c == ',' || c == ']') && depth == 0)
+              {
+                const auto eq = item.find('=');
+                if (eq != std::string::npos)
+                  names.insert(Utilities::trim(item.substr(0, eq)));
+                item.clear();
+                if (c == ']')
+                  break;
+                continue;
+              }
+            depth += (c == '{' || c == '[' || c == '(') - (c == '}' || c == ')');
+            if (c == ']')
+              --depth;
+            item += c;
+          }
+      }
+    return names;
+  }
+
 } // namespace softopt

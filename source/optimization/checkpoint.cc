@@ -14,7 +14,10 @@ namespace softopt
   {
     namespace
     {
-      constexpr std::uint64_t magic = 0x736f66746f707432; // "softopt2"
+      constexpr std::uint64_t magic = 0x736f66746f707433; // "softopt3"
+      // Before the accepted design was part of it (read without: the
+      // first resumed iteration halves towards zero, as it did then).
+      constexpr std::uint64_t magic_2 = 0x736f66746f707432; // "softopt2"
       // Before the warm start's secant was part of it (read without).
       constexpr std::uint64_t magic_1 = 0x736f66746f707431; // "softopt1"
 
@@ -117,18 +120,12 @@ namespace softopt
 
 
     void
-    save(const std::string &output_directory,
-         const unsigned int iteration,
-         const Vector      &d,
-         const Vector      &X_o,
-         const Vector      &psi,
-         const MMA         &mma,
-         const std::map<double, Vector> &states,
-         const SecantPredictor          &secant,
-         const std::string              &mesh_file)
+    save(const std::string   &output_directory,
+         const unsigned int   iteration,
+         const DesignIterate &x)
     {
       namespace fs     = std::filesystem;
-      const auto  comm = d.get_mpi_communicator();
+      const auto  comm = x.d.get_mpi_communicator();
       const bool  root = Utilities::MPI::this_mpi_process(comm) == 0;
       const auto  dir  = directory(output_directory);
       const auto  next = dir + ".new";
@@ -138,11 +135,11 @@ namespace softopt
           fs::create_directories(next);
         }
       MPI_Barrier(comm);
-      if (root && !mesh_file.empty())
+      if (root && !x.mesh_file.empty())
         {
           // By its name: it lives in the output directory, which may move.
           std::ofstream out(next + "/mesh");
-          out << std::filesystem::path(mesh_file).filename().string() << '\n';
+          out << std::filesystem::path(x.mesh_file).filename().string() << '\n';
           AssertThrow(out, ExcMessage("Writing " + next + "/mesh failed."));
         }
       {
@@ -151,17 +148,18 @@ namespace softopt
         write_value(out, magic);
         write_value<std::uint32_t>(out, Utilities::MPI::n_mpi_processes(comm));
         write_value<std::uint32_t>(out, iteration);
-        write_vector(out, d);
-        write_vector(out, X_o);
-        write_vector(out, psi);
-        mma.save(out);
-        write_states(out, states);
+        write_vector(out, x.d);
+        write_vector(out, x.accepted);
+        write_vector(out, x.X_o);
+        write_vector(out, x.psi);
+        x.mma->save(out);
+        write_states(out, x.states);
         // The secant: the positions of the design of these states, and the
         // design before it.
-        const auto &previous = secant.previous_design();
-        write_value<std::uint8_t>(out, secant.last_positions().size() > 0);
-        if (secant.last_positions().size() > 0)
-          write_vector(out, secant.last_positions());
+        const auto &previous = x.secant.previous_design();
+        write_value<std::uint8_t>(out, x.secant.last_positions().size() > 0);
+        if (x.secant.last_positions().size() > 0)
+          write_vector(out, x.secant.last_positions());
         write_value<std::uint8_t>(out, !previous.states.empty());
         if (!previous.states.empty())
           {
@@ -196,26 +194,12 @@ namespace softopt
 
 
 
-    void
-    select_mesh(const std::string &output_directory, std::string &mesh_file_name)
-    {
-      if (const auto name = mesh_file(output_directory); !name.empty())
-        mesh_file_name = name;
-    }
-
-
-
     unsigned int
     load(const std::string &output_directory,
-         Vector            &d,
-         Vector            &X_o,
-         Vector            &psi,
-         MMA               &mma,
          const Vector      &state_template,
-         std::map<double, Vector> &states,
-         SecantPredictor          &secant)
+         DesignIterate     &x)
     {
-      const auto comm = d.get_mpi_communicator();
+      const auto    comm = x.d.get_mpi_communicator();
       const auto    file = rank_file(existing_directory(output_directory), comm);
       std::ifstream in(file, std::ios::binary);
       AssertThrow(in,
@@ -224,7 +208,7 @@ namespace softopt
                              "interval\" iterations of subsection Optimization "
                              "into the output directory)."));
       const auto file_magic = read_value<std::uint64_t>(in);
-      AssertThrow(file_magic == magic || file_magic == magic_1,
+      AssertThrow(file_magic == magic || file_magic == magic_2 || file_magic == magic_1,
                   ExcMessage(file + " is not a softopt checkpoint."));
       const auto n_ranks = read_value<std::uint32_t>(in);
       AssertThrow(n_ranks == Utilities::MPI::n_mpi_processes(comm),
@@ -233,28 +217,32 @@ namespace softopt
                              " MPI ranks; restart with mpirun -np " +
                              std::to_string(n_ranks) + "."));
       const auto iteration = read_value<std::uint32_t>(in);
-      read_vector(in, d, file);
-      read_vector(in, X_o, file);
-      read_vector(in, psi, file);
-      mma.load(in);
-      states = read_states(in, state_template, file);
+      x.mesh_file          = mesh_file(output_directory);
+      read_vector(in, x.d, file);
+      x.accepted = 0;
+      if (file_magic == magic)
+        read_vector(in, x.accepted, file);
+      read_vector(in, x.X_o, file);
+      read_vector(in, x.psi, file);
+      x.mma->load(in);
+      x.states = read_states(in, state_template, file);
       Vector                  X_last;
       SecantPredictor::Design previous;
-      if (file_magic == magic) // older checkpoints have no secant
+      if (file_magic != magic_1) // the oldest checkpoints have no secant
         {
           if (read_value<std::uint8_t>(in) && in)
             {
-              X_last = X_o;
+              X_last = x.X_o;
               read_vector(in, X_last, file);
             }
           if (read_value<std::uint8_t>(in) && in)
             {
-              previous.X = X_o;
+              previous.X = x.X_o;
               read_vector(in, previous.X, file);
               previous.states = read_states(in, state_template, file);
             }
         }
-      secant.restore(X_last, previous);
+      x.secant.restore(X_last, previous);
       AssertThrow(in, ExcMessage("The checkpoint " + file + " is truncated."));
       return iteration;
     }

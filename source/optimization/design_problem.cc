@@ -1,7 +1,8 @@
+#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/exceptions.h>
 
-#include <softopt/optimization/design_problem.h>
 #include <softopt/base/step_failure.h>
+#include <softopt/optimization/design_problem.h>
 #include <softopt/shape/remesh.h>
 #include <softopt/shape/residual_shape_derivative.h>
 
@@ -9,15 +10,18 @@
 
 namespace softopt
 {
-  DesignProblem::DesignProblem(Settings &settings)
-    : settings(settings)
-    , comm(MPI_COMM_WORLD)
+  DesignProblem::DesignProblem(const ProblemParameters &parameters,
+                               const MPI_Comm           comm,
+                               const std::string       &mesh_file)
+    : parameters(parameters)
+    , comm(comm)
+    , filter(parameters.shape_filter)
     , timer_output(comm, std::cout, TimerOutput::never, TimerOutput::wall_times)
   {
-    build();
-    for (const auto &f : settings.functionals)
+    build(mesh_file);
+    for (const auto &f : parameters.functionals)
       functionals_.push_back(f.get());
-    targets = settings.loading.target_load_factors;
+    targets = parameters.loading.target_load_factors;
     for (const auto *f : functionals_)
       targets.push_back(f->load_factor());
     std::sort(targets.begin(), targets.end());
@@ -27,20 +31,35 @@ namespace softopt
 
 
   void
-  DesignProblem::build()
+  DesignProblem::build(const std::string &file)
   {
     triangulation = std::make_unique<parallel::fullydistributed::Triangulation<3>>(comm);
-    settings.geometry.create_triangulation(*triangulation);
-    design   = std::make_unique<DesignConfiguration>(*triangulation, settings.geometry);
-    problem  = std::make_unique<HyperelasticProblem>(*triangulation,
+    const EdgeMidpoints midpoints =
+      parameters.geometry.create_triangulation(*triangulation, file);
+    design  = std::make_unique<DesignConfiguration>(*triangulation, midpoints);
+    problem = std::make_unique<HyperelasticProblem>(*triangulation,
                                                     design->get_mapping(),
-                                                    settings.geometry,
-                                                    *settings.material,
-                                                    settings.loading.pressure_kPa * 1e-3);
+                                                    parameters.geometry,
+                                                    *parameters.material,
+                                                    parameters.loading.pressure_kPa * 1e-3);
     problem->setup_system();
-    problem->set_linear_solver(settings.linear_solver);
-    settings.shape_filter.setup(*design, settings.geometry);
-    psi.reinit(design->create_vector()); // the new mesh's layout
+    problem->set_linear_solver(parameters.linear_solver);
+    filter.setup(*design, parameters.geometry);
+    mesh_file = file;
+  }
+
+
+
+  DesignIterate
+  DesignProblem::initial_iterate() const
+  {
+    DesignIterate x;
+    x.mesh_file = mesh_file;
+    x.X_o       = design->initial_coordinates();
+    x.d         = design->create_vector();
+    x.accepted  = x.d;
+    x.psi       = x.d;
+    return x;
   }
 
 
@@ -79,45 +98,48 @@ namespace softopt
 
 
   std::vector<double>
-  DesignProblem::evaluate(const Vector &d)
+  DesignProblem::evaluate(DesignIterate &x)
   {
-    // A refused design leaves the accepted one in place (its psi, and its
-    // states for the next warm start).
-    const Vector                   psi_accepted    = psi;
-    const std::map<double, Vector> states_accepted = states;
+    Vector                   psi = x.psi;
+    std::map<double, Vector> states;
+    std::vector<double>      values;
     try
       {
-        const std::vector<double> values = evaluate_design(d);
-        if (settings.optimization.warm_start && settings.optimization.secant_predictor)
-          predictor.accept(nodal_positions(), states_accepted);
-        return values;
+        values = evaluate_design(x, psi, states);
       }
     catch (...)
       {
-        psi    = psi_accepted;
-        states = states_accepted;
-        design->set_shape_field(psi);
-        settings.shape_filter.forget_factorization();
+        // A refused design leaves the accepted one in place.
+        design->set_shape_field(x.psi);
+        filter.forget_factorization();
         throw;
       }
+    const auto &warm = parameters.optimization;
+    if (warm.warm_start && warm.secant_predictor)
+      x.secant.accept(nodal_positions(), x.states);
+    x.psi    = std::move(psi);
+    x.states = std::move(states);
+    return values;
   }
 
 
 
   std::vector<double>
-  DesignProblem::evaluate_design(const Vector &d)
+  DesignProblem::evaluate_design(const DesignIterate      &x,
+                                 Vector                   &psi,
+                                 std::map<double, Vector> &states)
   {
     // Eq. PDEpot02 for psi(d), starting from the last psi; then the mapping.
     {
       TimerOutput::Scope scope(timer_output, "shape filter");
-      last_filter_result = settings.shape_filter.solve(d, psi);
+      last_filter_result = filter.solve(x.d, psi);
       design->set_shape_field(psi);
     }
 
     TimerOutput::Scope scope(timer_output, "path following");
     report     = PathReport();
     tangent_at = -1;
-    if (settings.optimization.warm_start && warm_start())
+    if (parameters.optimization.warm_start && warm_start(x, states))
       {
         report.warm_started = true;
         tangent_at          = targets.back();
@@ -125,9 +147,9 @@ namespace softopt
     else
       {
         ConditionalOStream quiet(std::cout, false);
-        const auto         result = settings.loading.run(
+        const auto         result = parameters.loading.path.run(
           *problem,
-          settings.newton,
+          parameters.newton,
           targets,
           [this](const PathFollowing::PathPoint &point, const Vector &) {
             report.newton_iterations += point.newton_iterations;
@@ -153,12 +175,12 @@ namespace softopt
 
 
   std::vector<DesignProblem::Vector>
-  DesignProblem::gradients()
+  DesignProblem::gradients(const DesignIterate &x)
   {
     std::vector<Vector> result(functionals_.size());
     Vector              r, P, dg_da, dg_dX, mu_a, mu_psi;
     // The last target first: after a warm start its tangent is assembled.
-    for (auto target = states.rbegin(); target != states.rend(); ++target)
+    for (auto target = x.states.rbegin(); target != x.states.rend(); ++target)
       {
         const double  load_factor = target->first;
         const Vector &a           = target->second;
@@ -195,9 +217,9 @@ namespace softopt
               dg_dX -= residual_shape_derivative(*problem, *design, a, load_factor, mu_a);
             }
             TimerOutput::Scope scope(timer_output, "adjoint: filter");
-            settings.shape_filter.solve_adjoint(dg_dX, mu_psi);
+            filter.solve_adjoint(dg_dX, mu_psi);
             // Eq. sens06: dg/dd = -mu_psi^T dr_psi/dd
-            result[i] = settings.shape_filter.design_gradient(mu_psi);
+            result[i] = filter.design_gradient(mu_psi);
           }
       }
     return result;
@@ -206,68 +228,67 @@ namespace softopt
 
 
   void
-  DesignProblem::update_mesh(const Vector &d)
+  DesignProblem::update_mesh(DesignIterate &x)
   {
-    last_filter_result = settings.shape_filter.solve(d, psi);
-    design->set_shape_field(psi);
+    last_filter_result = filter.solve(x.d, x.psi);
+    design->set_shape_field(x.psi);
     design->update_mesh();
-    psi = 0;
+    x.X_o = design->initial_coordinates();
+    x.psi = 0;
+    x.d   = 0;
+    x.accepted = 0;
     // Omega_o changed: the filter's matrices and |Omega_o| with it.
-    settings.shape_filter.setup(*design, settings.geometry);
+    filter.setup(*design, parameters.geometry);
   }
 
 
 
   void
-  DesignProblem::remesh(const std::string &msh_file)
+  DesignProblem::remesh(DesignIterate &x, const std::string &msh_file)
   {
     remesh_design(*design, msh_file);
     // Built beside the old mesh, which stays if anything fails.
     auto old_triangulation = std::move(triangulation);
     auto old_design        = std::move(design);
     auto old_problem       = std::move(problem);
-    const std::string old_file = settings.geometry.mesh_file;
+    const std::string old_file = mesh_file;
     try
       {
-        settings.geometry.mesh_file = msh_file;
-        build();
+        build(msh_file);
       }
     catch (...)
       {
         problem       = std::move(old_problem);
         design        = std::move(old_design);
         triangulation = std::move(old_triangulation);
-        settings.geometry.mesh_file = old_file;
-        // psi is untouched: build() sets it up last.
-        settings.shape_filter.setup(*design, settings.geometry);
+        mesh_file     = old_file;
+        filter.setup(*design, parameters.geometry);
         throw;
       }
     earlier_meshes_statistics += old_problem->get_statistics();
     old_problem.reset(); // before the DoFs and the mesh it lives on
     old_design.reset();
     // Nothing carries over: the next evaluate() follows the path from zero.
-    states.clear();
-    predictor          = SecantPredictor();
+    x                  = initial_iterate();
     tangent_at         = -1;
     last_filter_result = ShapeFilter::Result();
   }
 
 
 
-  const DesignProblem::Vector &
-  DesignProblem::shape_field() const
-  {
-    return psi;
-  }
-
-
-
   void
-  DesignProblem::restore(const Vector &initial_coordinates, const Vector &shape_field)
+  DesignProblem::restore(const DesignIterate &x)
   {
-    design->set_configuration(initial_coordinates, shape_field);
-    psi = shape_field;
-    settings.shape_filter.setup(*design, settings.geometry);
+    if (x.mesh_file != mesh_file)
+      {
+        earlier_meshes_statistics += problem->get_statistics();
+        problem.reset();
+        design.reset();
+        build(x.mesh_file);
+      }
+    design->set_configuration(x.X_o, x.psi);
+    filter.setup(*design, parameters.geometry);
+    tangent_at = -1;
   }
 
 
@@ -314,36 +335,42 @@ namespace softopt
 
 
 
-  bool
-  DesignProblem::warm_start()
+  MPI_Comm
+  DesignProblem::get_communicator() const
   {
-    if (states.size() != targets.size())
-      return false;
-    if (settings.optimization.secant_predictor)
-      if (auto prediction = predictor.predict(nodal_positions(), states);
-          prediction &&
-          newton_at_targets(std::move(prediction->states), report.secant_failure))
-        {
-          report.secant_alpha = prediction->alpha;
-          return true;
-        }
-    if (newton_at_targets(states, report.warm_start_failure))
-      return true;
-    states.clear();
-    return false;
+    return comm;
   }
 
 
 
   bool
-  DesignProblem::newton_at_targets(std::map<double, Vector> start,
-                                   std::string             &failure)
+  DesignProblem::warm_start(const DesignIterate &x, std::map<double, Vector> &states)
+  {
+    if (x.states.size() != targets.size())
+      return false;
+    if (parameters.optimization.secant_predictor)
+      if (auto prediction = x.secant.predict(nodal_positions(), x.states);
+          prediction &&
+          newton_at_targets(std::move(prediction->states), states, report.secant_failure))
+        {
+          report.secant_alpha = prediction->alpha;
+          return true;
+        }
+    return newton_at_targets(x.states, states, report.warm_start_failure);
+  }
+
+
+
+  bool
+  DesignProblem::newton_at_targets(std::map<double, Vector>  start,
+                                   std::map<double, Vector> &states,
+                                   std::string              &failure)
   {
     try
       {
         for (auto &[load_factor, a] : start) // ascending
           report.newton_iterations +=
-            settings.newton.solve(*problem, a, load_factor).iterations;
+            parameters.newton.solve(*problem, a, load_factor).iterations;
         states = std::move(start);
         return true;
       }
@@ -360,27 +387,8 @@ namespace softopt
   DesignProblem::nodal_positions() const
   {
     Vector X = design->initial_coordinates();
-    X += psi;
+    X += design->shape_field();
     return X;
-  }
-
-
-
-  void
-  DesignProblem::set_target_states(const std::map<double, Vector> &new_states,
-                                   const SecantPredictor          &secant)
-  {
-    states     = new_states;
-    tangent_at = -1;
-    predictor  = secant;
-  }
-
-
-
-  const SecantPredictor &
-  DesignProblem::secant_predictor() const
-  {
-    return predictor;
   }
 
 
@@ -397,13 +405,5 @@ namespace softopt
   DesignProblem::timer()
   {
     return timer_output;
-  }
-
-
-
-  const std::map<double, DesignProblem::Vector> &
-  DesignProblem::target_states() const
-  {
-    return states;
   }
 } // namespace softopt

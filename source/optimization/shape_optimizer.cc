@@ -10,23 +10,21 @@
 
 namespace softopt
 {
-  ShapeOptimizer::ShapeOptimizer(Settings              &settings,
-                                 DesignProblem         &problem,
-                                 const OutputDirectory &out)
-    : settings(settings)
+  ShapeOptimizer::ShapeOptimizer(const OptimizationParameters &parameters,
+                                 const OutputParameters       &output,
+                                 DesignProblem                &problem,
+                                 const OutputDirectory        &out)
+    : parameters(parameters)
+    , output(output)
     , problem(problem)
     , out(out)
-    , pcout(std::cout, Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
-    , d(problem.create_design_vector())
-    , accepted(d)
+    , comm(problem.get_communicator())
+    , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
   {
     const auto &functionals = problem.functionals();
-    AssertThrow(!functionals.empty() &&
-                  functionals.front()->kind() == Functional::Kind::objective,
-                ExcMessage(settings.input->path() +
-                           ": \"optimize\" needs at least one objective "
-                           "(subsection Objective 1)."));
-    reset_mma();
+    Assert(!functionals.empty() &&
+             functionals.front()->kind() == Functional::Kind::objective,
+           ExcMessage("The design loop needs an objective first."));
   }
 
 
@@ -34,11 +32,13 @@ namespace softopt
   std::string
   ShapeOptimizer::run(const bool restart)
   {
-    const auto        &opt   = settings.optimization;
-    unsigned int       k     = restart ? resume() : 0;
+    const auto        &opt   = parameters;
+    DesignIterate      x     = problem.initial_iterate();
+    unsigned int       k     = restart ? resume(x) : 0;
     const unsigned int first = k;
     if (!restart)
       {
+        reset_mma(x);
         std::vector<std::string> columns{"iteration"};
         for (const auto *f : problem.functionals())
           columns.push_back(f->name());
@@ -47,42 +47,38 @@ namespace softopt
                               "min_J_psi", "worst_quality", "worst_element_x_mm",
                               "worst_element_y_mm", "worst_element_z_mm"})
           columns.emplace_back(c);
-        history = std::make_unique<CsvWriter>(out.file("history.csv"),
-                                              columns,
-                                              MPI_COMM_WORLD);
+        history = std::make_unique<CsvWriter>(out.file("history.csv"), columns, comm);
       }
 
     for (; k < opt.maximum_iterations; ++k)
       {
         auto before_update = k > first && opt.every(k, opt.mesh_update_interval) ?
-                               update_mesh(k) : // X_o <- X_o + psi(d), d <- 0
-                               nullptr;
+                               update_mesh(k, x) : // X_o <- X_o + psi(d), d <- 0
+                               std::nullopt;
         if (k > first && opt.every(k, opt.checkpoint_interval))
-          Checkpoint::save(out.path(), k, d,
-                           problem.design_configuration().initial_coordinates(),
-                           problem.shape_field(), *mma, problem.target_states(),
-                           problem.secant_predictor(), mesh_file);
+          Checkpoint::save(out.path(), k, x);
 
         Timer               timer;
         std::vector<double> values; // psi(d), X, path to every target
-        const std::string   refused = evaluate_or_halve(k, k > first, before_update, values);
+        const std::string   refused =
+          evaluate_or_halve(k, k > first, before_update, x, values);
         if (!refused.empty())
           {
             stopped_on_error = true;
             return refused;
           }
-        const auto gradients = problem.gradients(); // adjoints, Eqs. sens01-06
-        accepted             = d;
+        const auto gradients = problem.gradients(x); // adjoints, Eqs. sens01-06
+        x.accepted           = x.d;
         if ((k == 0 && opt.output_interval > 0) || opt.every(k, opt.output_interval))
-          write_snapshot(k);
-        const double change = mma_step(values, gradients);
+          write_snapshot(k, x);
+        const double change = mma_step(x, values, gradients);
         record(k, values, change, timer.wall_time());
       }
     // The final design, unless just written.
     const bool written = opt.output_interval > 0 &&
                          (k - 1 == 0 || opt.every(k - 1, opt.output_interval));
     if (k > first && !written)
-      write_snapshot(k - 1);
+      write_snapshot(k - 1, x);
     return "reached the maximum number of iterations (" +
            std::to_string(opt.maximum_iterations) + ")";
   }
@@ -97,40 +93,33 @@ namespace softopt
 
 
 
-  std::unique_ptr<ShapeOptimizer::MeshBeforeUpdate>
-  ShapeOptimizer::update_mesh(const unsigned int k)
+  std::optional<DesignIterate>
+  ShapeOptimizer::update_mesh(const unsigned int k, DesignIterate &x)
   {
     // The mesh moves to the design d, not yet evaluated; if that design is
     // refused the update is undone and the step halved on the old mesh.
-    auto before = std::make_unique<MeshBeforeUpdate>(
-      MeshBeforeUpdate{problem.design_configuration().initial_coordinates(),
-                       problem.shape_field(),
-                       d,
-                       accepted,
-                       nullptr});
+    std::optional<DesignIterate> before = x;
     try
       {
-        problem.update_mesh(d);
-        d           = 0;
-        accepted    = d;
-        before->mma = std::move(mma);
-        reset_mma();
+        problem.update_mesh(x);
+        reset_mma(x);
       }
     catch (const std::exception &)
       {
-        undo_mesh_update(before); // evaluate() refuses d
-        return before;
+        x = *before; // evaluate() refuses d
+        problem.restore(x);
+        return std::nullopt;
       }
 
     // Elements the design flattened stay flat in the updated mesh: mesh the
     // design anew (not undone: the design is the same).
     const double quality = problem.filter_result().worst_quality;
-    if (quality < settings.optimization.remesh_quality)
+    if (quality < parameters.remesh_quality)
       {
         const std::string file = out.file("mesh-" + std::to_string(k) + ".msh");
         try
           {
-            problem.remesh(file);
+            problem.remesh(x, file);
           }
         catch (const std::exception &e)
           {
@@ -138,19 +127,16 @@ namespace softopt
                   << "on with the updated mesh: " << e.what() << std::endl;
             return before;
           }
-        mesh_file = file;
-        d.reinit(problem.create_design_vector()); // the new mesh's layout, zero
-        accepted.reinit(d);
-        reset_mma();
-        before.reset();
+        reset_mma(x);
         pcout << "  iteration " << k << ": worst element quality " << quality
-              << " < " << settings.optimization.remesh_quality
+              << " < " << parameters.remesh_quality
               << ", the design is meshed anew: "
               << problem.hyperelastic_problem()
                    .get_dof_handler()
                    .get_triangulation()
                    .n_global_active_cells()
               << " tetrahedra (" << file << ")" << std::endl;
+        return std::nullopt;
       }
     return before;
   }
@@ -158,15 +144,16 @@ namespace softopt
 
 
   std::string
-  ShapeOptimizer::evaluate_or_halve(const unsigned int                 k,
-                                    const bool                         may_halve,
-                                    std::unique_ptr<MeshBeforeUpdate> &before_update,
-                                    std::vector<double>               &values)
+  ShapeOptimizer::evaluate_or_halve(const unsigned int            k,
+                                    const bool                    may_halve,
+                                    std::optional<DesignIterate> &before_update,
+                                    DesignIterate                &x,
+                                    std::vector<double>          &values)
   {
     for (unsigned int halving = 0;; ++halving)
       try
         {
-          values = problem.evaluate(d);
+          values = problem.evaluate(x);
           return "";
         }
       catch (const std::exception &e)
@@ -177,11 +164,16 @@ namespace softopt
           else
             message << e.what();
           const std::string reason = Utilities::trim(message.str());
-          undo_mesh_update(before_update);
-          Vector step = d;
-          step -= accepted;
+          if (before_update)
+            {
+              x = *before_update; // the old mesh, its d and its MMA
+              before_update.reset();
+              problem.restore(x);
+            }
+          Vector step = x.d;
+          step -= x.accepted;
           // After a new mesh d = accepted = 0: nothing to halve.
-          if (!may_halve || halving == settings.optimization.step_halvings ||
+          if (!may_halve || halving == parameters.step_halvings ||
               step.linfty_norm() == 0)
             return "the design of iteration " + std::to_string(k) +
                    " was refused: " + reason +
@@ -190,7 +182,7 @@ namespace softopt
                    Checkpoint::directory(out.path()) + ".";
           // d <- (d_accepted + d) / 2: a shorter step in the same direction,
           // which MMA's next update starts from.
-          d.sadd(0.5, 0.5, accepted);
+          x.d.sadd(0.5, 0.5, x.accepted);
           pcout << "  iteration " << k << ": design refused (" << reason
                 << "); step halved" << std::endl;
         }
@@ -199,22 +191,7 @@ namespace softopt
 
 
   void
-  ShapeOptimizer::undo_mesh_update(std::unique_ptr<MeshBeforeUpdate> &before)
-  {
-    if (!before)
-      return;
-    problem.restore(before->initial_coordinates, before->shape_field);
-    d        = before->d;
-    accepted = before->accepted;
-    if (before->mma)
-      mma = std::move(before->mma);
-    before.reset();
-  }
-
-
-
-  void
-  ShapeOptimizer::reset_mma()
+  ShapeOptimizer::reset_mma(DesignIterate &x) const
   {
     std::vector<MMA::RowType> rows;
     for (const auto *f : problem.functionals())
@@ -222,27 +199,22 @@ namespace softopt
                        MMA::RowType::objective :
                        MMA::RowType::constraint);
     MMA::Settings mma_settings;
-    mma_settings.move_limit = settings.optimization.move_limit;
-    mma = std::make_unique<MMA>(d.locally_owned_size(), rows, MPI_COMM_WORLD, mma_settings);
+    mma_settings.move_limit = parameters.move_limit;
+    x.mma.emplace(x.d.locally_owned_size(), rows, comm, mma_settings);
   }
 
 
 
   unsigned int
-  ShapeOptimizer::resume()
+  ShapeOptimizer::resume(DesignIterate &x)
   {
-    Vector X_o = problem.create_design_vector(), psi = X_o;
-    std::map<double, Vector> states;
-    SecantPredictor          secant;
-    mesh_file                  = Checkpoint::mesh_file(out.path());
-    const unsigned int       k = Checkpoint::load(out.path(), d, X_o, psi, *mma,
-                                            problem.hyperelastic_problem().create_vector(),
-                                            states, secant);
-    problem.restore(X_o, psi);
-    problem.set_target_states(states, secant);
+    reset_mma(x); // the layout that Checkpoint::load fills
+    const unsigned int k =
+      Checkpoint::load(out.path(), problem.hyperelastic_problem().create_vector(), x);
+    problem.restore(x);
 
     // history.csv keeps its header and the rows before the checkpoint.
-    if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         std::ifstream            in(out.file("history.csv"));
         std::vector<std::string> lines;
@@ -253,8 +225,8 @@ namespace softopt
         for (const auto &line : lines)
           rewrite << line << '\n';
       }
-    MPI_Barrier(MPI_COMM_WORLD);
-    history = std::make_unique<CsvWriter>(out.file("history.csv"), MPI_COMM_WORLD);
+    MPI_Barrier(comm);
+    history = std::make_unique<CsvWriter>(out.file("history.csv"), comm);
     pcout << "Restarting at iteration " << k << " from "
           << Checkpoint::directory(out.path()) << std::endl;
     return k;
@@ -263,8 +235,9 @@ namespace softopt
 
 
   double
-  ShapeOptimizer::mma_step(const std::vector<double> &values,
-                           const std::vector<Vector> &gradients)
+  ShapeOptimizer::mma_step(DesignIterate             &x,
+                           const std::vector<double> &values,
+                           const std::vector<Vector> &gradients) const
   {
     // The min-max form needs positive objective rows (z >= 0): shifting
     // every g_i by the same constant C only moves z, and C above the
@@ -280,27 +253,27 @@ namespace softopt
     for (unsigned int i = 0; i < values.size(); ++i)
       rows[i] += is_objective(i) ? shift : 0.;
 
-    const IndexSet owned = d.locally_owned_elements();
+    const IndexSet owned = x.d.locally_owned_elements();
     const std::vector<types::global_dof_index> indices(owned.begin(), owned.end());
     const auto local = [&](const Vector &v) {
-      std::vector<double> x(indices.size());
-      v.extract_subvector_to(indices.begin(), indices.end(), x.begin());
-      return x;
+      std::vector<double> entries(indices.size());
+      v.extract_subvector_to(indices.begin(), indices.end(), entries.begin());
+      return entries;
     };
-    std::vector<double> x = local(d);
+    std::vector<double> d = local(x.d);
     std::vector<std::vector<double>> dg;
     std::vector<ArrayView<const double>> dg_views;
     for (const auto &g : gradients)
       dg.push_back(local(g));
     for (const auto &g : dg)
       dg_views.emplace_back(g);
-    const double bound = settings.optimization.design_bound;
-    const std::vector<double> xmin(x.size(), -bound), xmax(x.size(), bound);
+    const double bound = parameters.design_bound;
+    const std::vector<double> dmin(d.size(), -bound), dmax(d.size(), bound);
 
-    mma->update(x, 0., {}, rows, dg_views, xmin, xmax);
-    d.set(indices, x);
-    d.compress(VectorOperation::insert);
-    return mma->last_step();
+    x.mma->update(d, 0., {}, rows, dg_views, dmin, dmax);
+    x.d.set(indices, d);
+    x.d.compress(VectorOperation::insert);
+    return x.mma->last_step();
   }
 
 
@@ -339,7 +312,7 @@ namespace softopt
     if (!problem.path_report().warm_start_failure.empty())
       pcout << " (path from zero: the warm start failed, "
             << problem.path_report().warm_start_failure << ")";
-    if (settings.print_timings)
+    if (output.print_timings)
       pcout << "  " << std::setprecision(3) << wall_time << " s";
     pcout << std::endl;
   }
@@ -347,19 +320,19 @@ namespace softopt
 
 
   void
-  ShapeOptimizer::write_snapshot(const unsigned int iteration)
+  ShapeOptimizer::write_snapshot(const unsigned int iteration, const DesignIterate &x)
   {
-    if (settings.vtu_output == Settings::VtuOutput::none)
+    if (output.vtu_output == OutputParameters::VtuOutput::none)
       return;
     const auto &physics = problem.hyperelastic_problem();
     const auto  add     = [&](const std::string &name, const Vector &a) {
       auto &series = snapshots[name];
       if (!series)
-        series = std::make_unique<PvdSeries>(out.file(name + ".pvd"), MPI_COMM_WORLD);
+        series = std::make_unique<PvdSeries>(out.file(name + ".pvd"), comm);
       series->add(iteration, physics.write_vtu(a, out.path(), name, iteration));
     };
     add("design", physics.create_vector());
-    for (const auto &[load_factor, a] : problem.target_states())
+    for (const auto &[load_factor, a] : x.states)
       {
         std::ostringstream name;
         name << "deformed_at_" << load_factor;

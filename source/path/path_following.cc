@@ -14,12 +14,6 @@ namespace softopt
   void
   PathFollowing::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Loading");
-    prm.declare_entry("Pressure",
-                      "15",
-                      Patterns::Double(),
-                      "The cavity pressure (relative to the atmosphere) at "
-                      "load factor 1, in kPa.");
     prm.declare_entry("Path following",
                       "load control",
                       Patterns::Selection("load control|arclength"),
@@ -37,12 +31,6 @@ namespace softopt
                       "constraint |Delta u|^2 + (w |u_f| Delta lambda)^2 = "
                       "alpha^2, u_f the initial displacement per unit load "
                       "factor (dimensionless; 0: a cylindrical constraint).");
-    prm.declare_entry("Target load factors",
-                      "1",
-                      Patterns::List(Patterns::Double(0), 1),
-                      "Load factors at which the path must land exactly (the "
-                      "last one ends the path); dimensionless, pressure = "
-                      "load factor x Pressure.");
     prm.declare_entry("Initial load increment",
                       "1",
                       Patterns::Double(1e-12, 1),
@@ -64,12 +52,6 @@ namespace softopt
                       "200",
                       Patterns::Integer(1),
                       "The path stops after this many converged steps.");
-    prm.declare_entry("Maximum cavity volume ratio",
-                      "0",
-                      Patterns::Double(0),
-                      "The path stops once the cavity volume exceeds this "
-                      "multiple of its initial volume (0: no limit).");
-    prm.leave_subsection();
   }
 
 
@@ -77,32 +59,17 @@ namespace softopt
   void
   PathFollowing::parse_parameters(ParameterHandler &prm, const InputFile &input)
   {
-    prm.enter_subsection("Loading");
-    pressure_kPa        = prm.get_double("Pressure");
     method = prm.get("Path following") == "arclength" ? Method::arclength :
                                                          Method::load_control;
     load_factor_weight  = prm.get_double("Arclength load factor weight");
-    target_load_factors = parse_doubles(prm.get("Target load factors"),
-                                        input.where("Loading",
-                                                    "Target load factors"));
     initial_increment    = prm.get_double("Initial load increment");
     minimum_increment    = prm.get_double("Minimum load increment");
     maximum_increment    = prm.get_double("Maximum load increment");
     maximum_steps        = prm.get_integer("Maximum number of steps");
-    maximum_volume_ratio = prm.get_double("Maximum cavity volume ratio");
-    prm.leave_subsection();
 
-    for (const double t : target_load_factors)
-      AssertThrow(t > 0,
-                  ExcMessage(input.where("Loading", "Target load factors") +
-                             ": every target load factor must be positive."));
     AssertThrow(minimum_increment <= initial_increment,
                 ExcMessage(input.where("Loading", "Minimum load increment") +
                            ": must not exceed the initial load increment."));
-    AssertThrow(maximum_volume_ratio == 0 || maximum_volume_ratio > 1,
-                ExcMessage(input.where("Loading",
-                                       "Maximum cavity volume ratio") +
-                           ": must be 0 (no limit) or larger than 1."));
   }
 
 

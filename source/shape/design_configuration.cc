@@ -10,7 +10,7 @@
 namespace softopt
 {
   DesignConfiguration::DesignConfiguration(const Triangulation<3> &triangulation,
-                                           const Geometry         &geometry)
+                                           const EdgeMidpoints    &edge_midpoints)
     : fe(FE_SimplexP<3>(2), 3)
     , dof_handler(triangulation)
   {
@@ -22,7 +22,7 @@ namespace softopt
     psi.reinit(locally_owned_dofs, comm);
     X.reinit(locally_owned_dofs, locally_relevant_dofs, comm);
     X_o_ghosted.reinit(locally_owned_dofs, locally_relevant_dofs, comm);
-    geometry.initial_coordinates(dof_handler, X_o);
+    softopt::initial_coordinates(dof_handler, edge_midpoints, X_o);
     update_positions();
     mapping = std::make_unique<MappingFEField<3, 3, Vector>>(dof_handler, X);
     initial_mapping =

@@ -266,7 +266,8 @@ namespace softopt
           AssertThrow(geo, ExcMessage("Cannot write " + stem + ".geo"));
           std::filesystem::remove(msh_file); // none of an earlier run
           const std::string log =
-            run_gmsh("-3 -order 2 -format msh22 \"" + stem + ".geo\"", msh_file);
+            run_gmsh({"-3", "-order", "2", "-format", "msh22", stem + ".geo"},
+                     msh_file);
           if (!log.empty())
             error = "gmsh could not mesh the design " + log;
           else

@@ -70,7 +70,7 @@ namespace softopt
 
 
   void
-  ShapeFilter::declare_parameters(ParameterHandler &prm)
+  ShapeFilter::Parameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Shape filter");
     prm.declare_entry("K_psi",
@@ -104,7 +104,8 @@ namespace softopt
 
 
   void
-  ShapeFilter::parse_parameters(ParameterHandler &prm, const InputFile &input)
+  ShapeFilter::Parameters::parse_parameters(ParameterHandler &prm,
+                                            const InputFile  &input)
   {
     prm.enter_subsection("Shape filter");
     K_psi              = prm.get_double("K_psi");
@@ -121,6 +122,12 @@ namespace softopt
 
 
 
+  ShapeFilter::ShapeFilter(const Parameters &parameters)
+    : parameters(parameters)
+  {}
+
+
+
   void
   ShapeFilter::setup(const DesignConfiguration &design_configuration,
                      const Geometry            &geometry)
@@ -133,7 +140,7 @@ namespace softopt
     IndexSet             relevant;
     DoFTools::extract_locally_relevant_dofs(dofs, relevant);
 
-    std::vector<types::boundary_id> fixed = fixed_boundary_ids;
+    std::vector<types::boundary_id> fixed = parameters.fixed_boundary_ids;
     if (fixed.empty())
       {
         for (const auto &[id, components] : geometry.dirichlet_boundaries)
@@ -251,7 +258,7 @@ namespace softopt
   {
     const DoFHandler<3>   &dofs  = design->get_dof_handler();
     const Vector           psi_g = design->ghosted(psi), d_g = design->ghosted(d);
-    const FictitiousMaterial material(K_psi, G_psi, k_psi);
+    const FictitiousMaterial material(parameters.K_psi, parameters.G_psi, parameters.k_psi);
     const unsigned int     n           = component_function.size();
     const unsigned int     n_functions = shape_values[0].size();
     FullMatrix<double>     cell_matrix(n, n);

@@ -18,7 +18,7 @@ namespace softopt
    * Returns the exit code: non-zero if a load step could not be solved.
    */
   int
-  run_analysis(Settings &settings);
+  run_analysis(const Settings &settings, const MPI_Comm comm);
 
   /**
    * Follows the load path of @p settings on @p design, landing on every
@@ -32,7 +32,7 @@ namespace softopt
   PathFollowing::Result
   follow_load_path(HyperelasticProblem                   &problem,
                    const DesignConfiguration             &design,
-                   Settings                              &settings,
+                   const Settings                        &settings,
                    const std::vector<const Functional *> &functionals,
                    const std::vector<double>             &targets,
                    const std::string                     &directory,

@@ -16,7 +16,7 @@ namespace softopt
    * gradient is right (the plain difference falls as h).
    */
   int
-  run_gradient_check(Settings &settings);
+  run_gradient_check(const Settings &settings, const MPI_Comm comm);
 } // namespace softopt
 
 #endif

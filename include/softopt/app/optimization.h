@@ -14,7 +14,7 @@ namespace softopt
    * Returns the exit code.
    */
   int
-  run_optimization(Settings &settings, const bool restart);
+  run_optimization(const Settings &settings, const bool restart, const MPI_Comm comm);
 } // namespace softopt
 
 #endif

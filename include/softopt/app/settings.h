@@ -4,14 +4,8 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <softopt/base/input.h>
-#include <softopt/functionals/functional.h>
-#include <softopt/geometry/geometry.h>
-#include <softopt/path/newton_solver.h>
-#include <softopt/path/path_following.h>
-#include <softopt/optimization/optimization_parameters.h>
-#include <softopt/physics/material.h>
-#include <softopt/shape/shape_filter.h>
-#include <softopt/solvers/direct_solver.h>
+#include <softopt/io/output_parameters.h>
+#include <softopt/optimization/problem_parameters.h>
 
 #include <memory>
 #include <string>
@@ -19,11 +13,12 @@
 namespace softopt
 {
   /**
-   * Every entry of a parameter file, one subsection per class, plus the
-   * top-level entries. The classes declare and parse their own entries;
-   * this only gathers them.
+   * Every entry of a parameter file: the problem's (ProblemParameters), what
+   * a run writes (OutputParameters), where and which command, and the file
+   * itself. The classes declare and parse their own entries; this only
+   * gathers them.
    */
-  struct Settings
+  struct Settings : ProblemParameters
   {
     /** Declares every entry; the numbered subsections ("Objective N") those
      * @p input contains, or one of each as an example without a file. */
@@ -40,32 +35,9 @@ namespace softopt
     /** Top level. */
     std::string output_directory;
     std::string command;
-    bool        print_timings = true;
 
-    /** subsection Output */
-    enum class VtuOutput
-    {
-      every_step,
-      targets,
-      none
-    } vtu_output = VtuOutput::every_step;
-
-    /** subsection Output: the surface points whose displacement history
-     * goes to tracked_points.csv (none: no file). */
-    std::vector<NamedPoint> tracked_points;
-
-    Geometry           geometry;
-    /** subsection Material: the registered model it names. */
-    std::shared_ptr<const Material> material;
-    PathFollowing      loading;
-    NewtonSolver       newton;
-    /** subsection Linear solver */
-    DirectSolver::Parameters linear_solver;
-    ShapeFilter        shape_filter;
-    OptimizationParameters optimization;
-
-    /** The objectives and constraints, in the order of the file. */
-    std::vector<std::unique_ptr<Functional>> functionals;
+    /** subsection Output and Print timings */
+    OutputParameters output;
   };
 } // namespace softopt
 

@@ -33,23 +33,15 @@ namespace softopt
     parse_parameters(ParameterHandler &prm, const InputFile &input);
 
     /**
-     * Reads the mesh on every rank (running gmsh first for a .geo), checks
-     * that every boundary id named in the parameter file exists, partitions
-     * the cells with METIS and builds the fully distributed triangulation.
+     * Reads the mesh @p file (empty: the parameter file's Mesh file) on
+     * every rank (running gmsh first for a .geo), checks that every
+     * boundary id named in the parameter file exists, partitions the cells
+     * with METIS and builds the fully distributed triangulation. Returns
+     * the midside nodes of gmsh's quadratic mesh (initial_coordinates()).
      */
-    void
-    create_triangulation(
-      parallel::fullydistributed::Triangulation<3> &triangulation);
-
-    /**
-     * The initial design coordinates X_o at the DoFs of a P2 vector field on
-     * the triangulation made by create_triangulation(): vertices, and the
-     * midside nodes of gmsh's quadratic mesh, which lie on the curved CAD
-     * surfaces (straight midpoints for a linear mesh). In mm.
-     */
-    void
-    initial_coordinates(const DoFHandler<3>        &dof_handler,
-                        PETScWrappers::MPI::Vector &coordinates) const;
+    EdgeMidpoints
+    create_triangulation(parallel::fullydistributed::Triangulation<3> &triangulation,
+                         const std::string &file = "") const;
 
     /** The mesh file, resolved against the parameter file's folder. */
     std::string mesh_file;
@@ -78,22 +70,35 @@ namespace softopt
                parallel::fullydistributed::Triangulation<3> &triangulation);
 
   private:
-    /** Runs gmsh on the mesh file (meshing a .geo with quadratic tetrahedra)
-     * and returns the path of the format 2.2 .msh it wrote. */
+    /** Runs gmsh on @p mesh_file (meshing a .geo with quadratic
+     * tetrahedra) and returns the path of the format 2.2 .msh it wrote;
+     * messages start with @p where_mesh. */
     std::string
-    mesh_with_gmsh(const MPI_Comm comm) const;
+    mesh_with_gmsh(const MPI_Comm     comm,
+                   const std::string &mesh_file,
+                   const std::string &where_mesh) const;
 
     /** Throws unless the pressure boundary closes a cavity (up to symmetry
      * planes through the origin). */
     void
     check_cavity_is_closed(const Triangulation<3> &serial) const;
 
-    /** The midside nodes of the mesh read last. */
-    EdgeMidpoints edge_midpoints;
 
     /** Where each boundary role came from, for messages. */
     std::string where_dirichlet, where_pressure, where_design, where_mesh;
   };
+
+  /**
+   * The initial design coordinates X_o at the DoFs of a P2 vector field on
+   * a triangulation made by Geometry::create_triangulation(): vertices, and
+   * the @p edge_midpoints it returned, the midside nodes of gmsh's
+   * quadratic mesh, which lie on the curved CAD surfaces (straight
+   * midpoints for a linear mesh). In mm.
+   */
+  void
+  initial_coordinates(const DoFHandler<3>        &dof_handler,
+                      const EdgeMidpoints        &edge_midpoints,
+                      PETScWrappers::MPI::Vector &coordinates);
 } // namespace softopt
 
 #endif

@@ -4,6 +4,7 @@
 #include <deal.II/base/point.h>
 
 #include <map>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -113,12 +114,18 @@ namespace softopt
                             const std::string &linear_file);
 
   /**
-   * Runs gmsh with @p arguments, writing @p output (on the calling rank
-   * only). Returns "" if gmsh succeeded and wrote @p output, else the
-   * command and gmsh's log, for a message.
+   * Runs gmsh with @p arguments (each one argument, no shell: see
+   * run_program()), writing @p output (on the calling rank only). Returns
+   * "" if gmsh succeeded and wrote @p output, else the command and gmsh's
+   * log, for a message.
    */
   std::string
-  run_gmsh(const std::string &arguments, const std::string &output);
+  run_gmsh(std::vector<std::string> arguments, const std::string &output);
+
+  /** The names a gmsh .geo file declares with DefineConstant[...], the
+   * numbers gmsh's -setnumber can set. */
+  std::set<std::string>
+  geo_constants(const std::string &geo_file);
 } // namespace softopt
 
 #endif

@@ -1,39 +1,49 @@
 #ifndef softopt_optimization_design_problem_h
 #define softopt_optimization_design_problem_h
 
-#include <deal.II/base/conditional_ostream.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/fully_distributed_tria.h>
 
-#include <softopt/app/settings.h>
 #include <softopt/functionals/functional.h>
-#include <softopt/optimization/secant_predictor.h>
+#include <softopt/optimization/design_iterate.h>
+#include <softopt/optimization/problem_parameters.h>
 #include <softopt/physics/hyperelastic_problem.h>
 #include <softopt/shape/design_configuration.h>
 #include <softopt/shape/shape_filter.h>
 
 #include <map>
-#include <string>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace softopt
 {
   /**
-   * Everything between a design vector d and the functionals with their
+   * Everything between a design iterate and the functionals with their
    * gradients dg/dd (Sections 3, 5 and 6.1): the shape filter psi(d), the
    * design X = X_o + psi driving the mapping, the equilibrium path to every
    * target load factor, the functionals there, and their adjoint
-   * sensitivities. d, psi and X are P2 vector fields on the same mesh, in mm.
+   * sensitivities. It owns the mesh, the physics and the filter of the
+   * iterate it was last given (initial_iterate(), evaluate(), update_mesh(),
+   * remesh(), restore()); the iterate itself, the state of the run, is the
+   * caller's (DesignIterate).
    */
   class DesignProblem
   {
   public:
     using Vector = PETScWrappers::MPI::Vector;
 
-    /** Builds mesh, design configuration, filter and physics from
-     * @p settings, which must outlive this. */
-    explicit DesignProblem(Settings &settings);
+    /** Builds mesh (@p mesh_file, or the parameter file's Mesh file if
+     * empty), design configuration, filter and physics from
+     * @p parameters, which must outlive this. */
+    DesignProblem(const ProblemParameters &parameters,
+                  const MPI_Comm           comm,
+                  const std::string       &mesh_file = "");
+
+    /** The design at rest on the current mesh: X_o as meshed, d = accepted
+     * = psi = 0, no states, no secant, no MMA. */
+    DesignIterate
+    initial_iterate() const;
 
     /** A zero design vector. */
     Vector
@@ -54,42 +64,42 @@ namespace softopt
     functionals() const;
 
     /**
-     * The functional values at design @p d: filters d, follows the path to
-     * every target load factor (the union of "Target load factors" and the
-     * functionals' load factors) and evaluates the functionals. Throws a
-     * message if the filter refuses the shape or the path cannot reach a
-     * target; the accepted design (psi and the states at the targets) then
-     * stays in place.
+     * The functional values at the design variables x.d: filters d
+     * (Newton from x.psi), follows the path to every target load factor
+     * (warm-started from x.states along x.secant, or from zero) and
+     * evaluates the functionals. Then x.psi, x.states and x.secant are
+     * those of x.d. Throws a message if the filter refuses the shape or the
+     * path cannot reach a target; @p x and the mapping then stay as they
+     * were. @p x must be the iterate this problem holds (see the class).
      */
     std::vector<double>
-    evaluate(const Vector &d);
+    evaluate(DesignIterate &x);
 
-    /** dg/dd of every functional at the last evaluate(), by the adjoint
+    /** dg/dd of every functional at @p x, just evaluated, by the adjoint
      * method (Eqs. sens01-sens06). */
     std::vector<Vector>
-    gradients();
+    gradients(const DesignIterate &x);
 
-    /** The mesh update of Section 5: X_o <- X_o + psi(@p d), psi <- 0; the
-     * caller sets d <- 0. The geometry and every functional stay unchanged.
-     * Throws like evaluate() if the filter refuses @p d. */
+    /** The mesh update of Section 5: X_o <- X_o + psi(x.d), psi <- 0,
+     * d <- 0, accepted <- 0; the states and the secant carry over (X is
+     * continuous). Throws like evaluate() if the filter refuses x.d (then
+     * restore() the iterate from before). */
     void
-    update_mesh(const Vector &d);
+    update_mesh(DesignIterate &x);
 
     /** A new mesh of the current design X = X_o + psi (remesh_design()),
-     * written to @p msh_file and read from there, with X_o the new mesh,
-     * psi = 0 and no states (the next evaluate() follows the path from
-     * zero). The caller starts d and MMA afresh. If it throws, the old
-     * mesh and design stay in place. */
+     * written to @p msh_file and read from there; @p x becomes the new
+     * mesh's initial_iterate() (X_o the new mesh, nothing else carries
+     * over: the next evaluate() follows the path from zero). If it throws,
+     * the old mesh and @p x stay as they were. */
     void
-    remesh(const std::string &msh_file);
+    remesh(DesignIterate &x, const std::string &msh_file);
 
-    /** psi of the last filter solve. */
-    const Vector &
-    shape_field() const;
-
-    /** Sets X_o and psi (a restart from a checkpoint). */
+    /** Makes @p x this problem's iterate: builds its mesh if it is another
+     * (a checkpoint's), sets X_o and psi, and sets the filter up on X_o.
+     * @p x must have the layout of its mesh. */
     void
-    restore(const Vector &initial_coordinates, const Vector &psi);
+    restore(const DesignIterate &x);
 
     /** The filter's report of the last evaluate(). */
     const ShapeFilter::Result &
@@ -103,25 +113,17 @@ namespace softopt
     HyperelasticProblem &
     hyperelastic_problem();
 
+    /** The mapping of the last accepted design. */
     const DesignConfiguration &
     design_configuration() const;
+
+    MPI_Comm
+    get_communicator() const;
 
     /** The physics' counts and times over the run, on every mesh it had
      * (a new mesh builds a new HyperelasticProblem). */
     HyperelasticProblem::Statistics
     physics_statistics() const;
-
-    /** Sets the states at the targets and the warm start's secant (a
-     * restart: the next evaluate() warm-starts from them like an
-     * uninterrupted run). */
-    void
-    set_target_states(const std::map<double, Vector> &states,
-                      const SecantPredictor          &secant);
-
-    /** The warm start's secant through the last two accepted designs (for
-     * a checkpoint). */
-    const SecantPredictor &
-    secant_predictor() const;
 
     /** What the last evaluate() did: whether it warm-started (else why
      * the warm start failed, if it was tried), and the Newton iterations
@@ -149,55 +151,55 @@ namespace softopt
     TimerOutput &
     timer();
 
-    /** The converged states at the target load factors of the last
-     * evaluate(). */
-    const std::map<double, Vector> &
-    target_states() const;
-
   private:
-    /** Mesh, design configuration, physics and filter from the geometry
-     * of the settings. */
+    /** Mesh, design configuration, physics and filter on @p mesh_file
+     * ("": the parameter file's). */
     void
-    build();
+    build(const std::string &mesh_file);
 
-    /** evaluate() without the restore on failure. */
+    /** psi(d), then the states at the targets of the design X_o + psi
+     * (warm-started from @p x); the functional values there. */
     std::vector<double>
-    evaluate_design(const Vector &d);
+    evaluate_design(const DesignIterate      &x,
+                    Vector                   &psi,
+                    std::map<double, Vector> &states);
 
     /** Newton at each target from the secant prediction of its state,
-     * else from the previous design's state there; false (and the states
-     * are void) if Newton fails from both for one of them. */
+     * else from the previous design's state there; false if Newton fails
+     * from both for one of them. */
     bool
-    warm_start();
+    warm_start(const DesignIterate &x, std::map<double, Vector> &states);
 
-    /** Newton at every target from @p states; true if it converged for
-     * all (then they are the new states). */
+    /** Newton at every target from @p start; true (and @p states the
+     * converged ones) if it converged for all. */
     bool
-    newton_at_targets(std::map<double, Vector> start, std::string &failure);
+    newton_at_targets(std::map<double, Vector>  start,
+                      std::map<double, Vector> &states,
+                      std::string              &failure);
 
     /** X = X_o + psi, the nodal positions of the current design (locally
      * owned entries). */
     Vector
     nodal_positions() const;
 
-    Settings                                     &settings;
+    const ProblemParameters                      &parameters;
     MPI_Comm                                      comm;
+    /** The mesh file of the current mesh ("": the parameter file's). */
+    std::string                                   mesh_file;
     std::unique_ptr<parallel::fullydistributed::Triangulation<3>> triangulation;
     std::unique_ptr<DesignConfiguration>          design;
     std::unique_ptr<HyperelasticProblem>          problem;
+    ShapeFilter                                   filter;
     /** The statistics of the physics on earlier meshes of the run. */
     HyperelasticProblem::Statistics               earlier_meshes_statistics;
     std::vector<const Functional *>               functionals_;
     std::unique_ptr<Functional>                   volume;
     std::vector<double>                           targets;
-    Vector                                        psi;
     ShapeFilter::Result                           last_filter_result;
-    std::map<double, Vector>                      states;
-    SecantPredictor                               predictor;
     TimerOutput                                   timer_output;
     PathReport                                    report;
-    /** The tangent of the last assemble() is at states[load factor]
-     * (negative: unknown). */
+    /** The tangent of the last assemble() is at the state of the last
+     * evaluate() at this load factor (negative: unknown). */
     double tangent_at = -1;
   };
 } // namespace softopt

@@ -185,10 +185,10 @@ namespace softopt
     double
     step_length(const Iterate &v, const Iterate &dv) const;
 
-    const unsigned int  n; // locally owned design variables
-    const unsigned int  m; // rows
-    const MPI_Comm      comm;
-    const Settings      settings;
+    unsigned int        n; // locally owned design variables
+    unsigned int        m; // rows
+    MPI_Comm            comm;
+    Settings            settings;
     std::vector<double> a, c, d; // a_i, c_i, d_i of the problem
 
     // The state of the iteration: k, x^{k-1}, x^{k-2}, asymptotes L, U.

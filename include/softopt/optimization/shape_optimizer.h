@@ -3,14 +3,17 @@
 
 #include <deal.II/base/conditional_ostream.h>
 
-#include <softopt/app/output_directory.h>
 #include <softopt/io/csv_writer.h>
+#include <softopt/io/output_directory.h>
+#include <softopt/io/output_parameters.h>
 #include <softopt/io/pvd_series.h>
+#include <softopt/optimization/design_iterate.h>
 #include <softopt/optimization/design_problem.h>
-#include <softopt/optimization/mma.h>
+#include <softopt/optimization/optimization_parameters.h>
 
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,21 +24,24 @@ namespace softopt
    *   minimize z  subject to  g_i(d) - z <= 0,  f_j(d) <= 0,  |d| <= d_max,
    * with the equilibrium of the physics and of the shape filter solved for
    * every design (staggered), and a mesh update X_o <- X_o + psi, d <- 0
-   * every "Mesh update interval" iterations. Writes history.csv (one row
-   * per iteration), VTU snapshots and checkpoints into the output
-   * directory.
+   * every "Mesh update interval" iterations. The state of the run is one
+   * DesignIterate; undo and checkpoints copy or write it whole. Writes
+   * history.csv (one row per iteration), VTU snapshots and checkpoints into
+   * the output directory.
    */
   class ShapeOptimizer
   {
   public:
     using Vector = DesignProblem::Vector;
 
-    ShapeOptimizer(Settings              &settings,
-                   DesignProblem         &problem,
-                   const OutputDirectory &out);
+    ShapeOptimizer(const OptimizationParameters &parameters,
+                   const OutputParameters       &output,
+                   DesignProblem                &problem,
+                   const OutputDirectory        &out);
 
-    /** The loop from d = 0, or from the checkpoint with @p restart. Returns
-     * why it stopped; failed() tells whether that was an error. */
+    /** The loop from the design at rest, or from the checkpoint with
+     * @p restart. Returns why it stopped; failed() tells whether that was
+     * an error. The problem then holds the last accepted design. */
     std::string
     run(const bool restart);
 
@@ -44,50 +50,40 @@ namespace softopt
     failed() const;
 
   private:
-    /** What a mesh update changes, to undo it when the design it moved
-     * the mesh to is refused. */
-    struct MeshBeforeUpdate
-    {
-      Vector initial_coordinates, shape_field, d, accepted;
-      /** MMA with its asymptotes and history on the old mesh's d. */
-      std::unique_ptr<MMA> mma;
-    };
-
     /** X_o <- X_o + psi(d), d <- 0 and a fresh MMA, at iteration @p k;
      * remeshes the design if its worst element quality is below "Remesh
-     * below quality". Returns what it changed, to undo (nothing if the
-     * filter refused psi(d) and it was undone already, or after a new
-     * mesh). */
-    std::unique_ptr<MeshBeforeUpdate>
-    update_mesh(const unsigned int k);
+     * below quality". Returns the iterate before, to undo the update if
+     * the design it moved the mesh to is refused (none if the filter
+     * refused psi(d) and it was undone already, or after a new mesh). */
+    std::optional<DesignIterate>
+    update_mesh(const unsigned int k, DesignIterate &x);
 
-    /** The functional values at d into @p values; a refused d is halved
+    /** The functional values at x.d into @p values; a refused d is halved
      * towards the accepted design (if @p may_halve, at most Step halvings
      * times; a mesh update to it is undone first). Returns why the run
      * stops, or "" once d is accepted. */
     std::string
-    evaluate_or_halve(const unsigned int                 k,
-                      const bool                         may_halve,
-                      std::unique_ptr<MeshBeforeUpdate> &before_update,
-                      std::vector<double>               &values);
+    evaluate_or_halve(const unsigned int            k,
+                      const bool                    may_halve,
+                      std::optional<DesignIterate> &before_update,
+                      DesignIterate                &x,
+                      std::vector<double>          &values);
 
-    /** Moves the mesh back (if @p before is set) and clears @p before; MMA
-     * keeps its fresh start. */
+    /** A fresh MMA on the design variables of @p x (start, mesh update). */
     void
-    undo_mesh_update(std::unique_ptr<MeshBeforeUpdate> &before);
+    reset_mma(DesignIterate &x) const;
 
-    /** A fresh MMA on the current design variables (start, mesh update). */
-    void
-    reset_mma();
-
-    /** Continues from the checkpoint: state, MMA, history rows before it. */
+    /** Continues from the checkpoint: the iterate, and the history rows
+     * before it. Returns the iteration to continue with. */
     unsigned int
-    resume();
+    resume(DesignIterate &x);
 
-    /** One MMA update of d from the values and gradients at d; returns the
-     * largest change of a design variable in mm. */
+    /** One MMA update of x.d from the values and gradients at x.d; returns
+     * the largest change of a design variable in mm. */
     double
-    mma_step(const std::vector<double> &values, const std::vector<Vector> &gradients);
+    mma_step(DesignIterate             &x,
+             const std::vector<double> &values,
+             const std::vector<Vector> &gradients) const;
 
     /** The row of history.csv and the line on screen. */
     void
@@ -96,22 +92,19 @@ namespace softopt
            const double               change,
            const double               wall_time);
 
-    /** The design undeformed and deformed at each target (VTU/PVD). */
+    /** The design of @p x undeformed and deformed at each target (VTU/PVD). */
     void
-    write_snapshot(const unsigned int iteration);
+    write_snapshot(const unsigned int iteration, const DesignIterate &x);
 
-    Settings                  &settings;
-    DesignProblem             &problem;
-    const OutputDirectory     &out;
-    ConditionalOStream         pcout;
-    Vector                     d, accepted;
-    std::unique_ptr<MMA>       mma;
-    std::unique_ptr<CsvWriter> history;
+    const OptimizationParameters &parameters;
+    const OutputParameters       &output;
+    DesignProblem                &problem;
+    const OutputDirectory        &out;
+    const MPI_Comm                comm;
+    ConditionalOStream            pcout;
+    std::unique_ptr<CsvWriter>    history;
     std::map<std::string, std::unique_ptr<PvdSeries>> snapshots;
-    bool                       stopped_on_error = false;
-    /** The mesh file of the last remesh, for the checkpoint ("": the
-     * parameter file's mesh). */
-    std::string                mesh_file;
+    bool                          stopped_on_error = false;
   };
 } // namespace softopt
 

@@ -25,9 +25,12 @@ namespace softopt
   class PathFollowing
   {
   public:
+    /** Declares the entries of the path in the current subsection
+     * ("Loading", see Loading). */
     static void
     declare_parameters(ParameterHandler &prm);
 
+    /** Reads them from the current subsection. */
     void
     parse_parameters(ParameterHandler &prm, const InputFile &input);
 
@@ -80,24 +83,15 @@ namespace softopt
       arclength
     };
 
-    /** Cavity pressure at load factor 1, in kPa. */
-    double pressure_kPa = 15;
-
     Method method = Method::load_control;
 
     /** The weight w of the load factor in the arclength constraint. */
     double load_factor_weight = 1;
 
-    /** Load factors at which a converged state is required. */
-    std::vector<double> target_load_factors{1.};
-
     double       initial_increment = 1;
     double       minimum_increment = 1e-4;
     double       maximum_increment = 1.;
     unsigned int maximum_steps     = 200;
-
-    /** Stop once V_c / V_0 of the cavity exceeds this (0: no limit). */
-    double maximum_volume_ratio = 0;
 
   private:
     /** Newton at fixed @p load_factor from @p current, predicted along the

@@ -25,8 +25,10 @@ namespace softopt
   public:
     using Vector = PETScWrappers::MPI::Vector;
 
+    /** X_o from the mesh @p triangulation and its curved @p edge_midpoints
+     * (both from Geometry::create_triangulation()), psi = 0. */
     DesignConfiguration(const Triangulation<3> &triangulation,
-                        const Geometry         &geometry);
+                        const EdgeMidpoints    &edge_midpoints);
 
     /** The mapping X(xi) of the current design. */
     const Mapping<3> &

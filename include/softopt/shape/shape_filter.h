@@ -32,18 +32,24 @@ namespace softopt
   public:
     using Vector = PETScWrappers::MPI::Vector;
 
-    static void
-    declare_parameters(ParameterHandler &prm);
+    /** Subsection "Shape filter". */
+    struct Parameters
+    {
+      static void
+      declare_parameters(ParameterHandler &prm);
 
-    void
-    parse_parameters(ParameterHandler &prm, const InputFile &input);
+      void
+      parse_parameters(ParameterHandler &prm, const InputFile &input);
 
-    /** K_psi and G_psi in mm^-1, k_psi dimensionless (Eq. Wshape). */
-    double K_psi = 1e-5, G_psi = 1e-2, k_psi = 10;
+      /** K_psi and G_psi in mm^-1, k_psi dimensionless (Eq. Wshape). */
+      double K_psi = 1e-5, G_psi = 1e-2, k_psi = 10;
 
-    /** Boundaries where psi = 0 (empty: every Dirichlet and design
-     * boundary, the paper's choice). */
-    std::vector<types::boundary_id> fixed_boundary_ids;
+      /** Boundaries where psi = 0 (empty: every Dirichlet and design
+       * boundary, the paper's choice). */
+      std::vector<types::boundary_id> fixed_boundary_ids;
+    };
+
+    explicit ShapeFilter(const Parameters &parameters);
 
     /**
      * Builds the constraints, matrices and |Omega_o| on @p design; call again
@@ -147,6 +153,7 @@ namespace softopt
     /** For each vector DoF of a cell: its component and scalar function. */
     std::vector<std::pair<unsigned int, unsigned int>> component_function;
 
+    const Parameters                 parameters;
     const DesignConfiguration       *design = nullptr;
     AffineConstraints<double>        constraints;
     PETScWrappers::MPI::SparseMatrix matrix;

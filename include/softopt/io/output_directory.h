@@ -1,5 +1,5 @@
-#ifndef softopt_app_output_directory_h
-#define softopt_app_output_directory_h
+#ifndef softopt_io_output_directory_h
+#define softopt_io_output_directory_h
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>

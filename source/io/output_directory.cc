@@ -1,6 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
-#include <softopt/app/output_directory.h>
+#include <softopt/io/output_directory.h>
 
 #include <filesystem>
 #include <fstream>

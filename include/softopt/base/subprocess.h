@@ -1,0 +1,28 @@
+#ifndef softopt_base_subprocess_h
+#define softopt_base_subprocess_h
+
+#include <string>
+#include <vector>
+
+namespace softopt
+{
+  /**
+   * Runs the program @p argv[0] (looked up in PATH if it has no '/') with
+   * the arguments @p argv[1...], each passed to it as it is: no shell sees
+   * them, so no quoting, globbing or command substitution can happen, and
+   * a file name from a parameter file stays a file name. Its standard output
+   * and error go to @p log_file (created or truncated), its standard input
+   * is /dev/null. The child is killed when the calling process dies (kill
+   * -9 included), so no gmsh outlives an interrupted run. Returns the exit
+   * status, or -1 if the program could not be started or was killed.
+   */
+  int
+  run_program(const std::vector<std::string> &argv, const std::string &log_file);
+
+  /** @p argv as one line for a message, each argument in double quotes
+   * where it holds a space or a quote (for reading, not for a shell). */
+  std::string
+  command_line(const std::vector<std::string> &argv);
+} // namespace softopt
+
+#endif

@@ -1,0 +1,39 @@
+#ifndef softopt_io_output_parameters_h
+#define softopt_io_output_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <softopt/base/input.h>
+
+#include <vector>
+
+namespace softopt
+{
+  /** What a run writes besides its results (subsection "Output" and the
+   * top-level "Print timings"). */
+  struct OutputParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm, const InputFile &input);
+
+    /** Wall times at the end of a run (off in tests). */
+    bool print_timings = true;
+
+    /** Which converged states of a load path go to VTU files. */
+    enum class VtuOutput
+    {
+      every_step,
+      targets,
+      none
+    } vtu_output = VtuOutput::every_step;
+
+    /** The surface points whose displacement history goes to
+     * tracked_points.csv (none: no file). */
+    std::vector<NamedPoint> tracked_points;
+  };
+} // namespace softopt
+
+#endif

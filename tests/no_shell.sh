@@ -1,0 +1,91 @@
+#!/bin/bash
+# A parameter file is data: no entry of it may reach a shell. Each probe
+# plants a command that would create a file if a shell read the entry, runs
+# softopt, and fails if the file exists afterwards.
+#   1. Output directory o'$(touch X)'x, read by the plotting call at the end
+#      of "optimize" (one design iteration on the coarse sphere octant);
+#   2. a Mesh file named inj"$(touch X)".geo, read by the gmsh call; a legal
+#      file name, so the run must also succeed;
+#   3. Mesh parameters r$(touch X): 10, refused before gmsh runs because the
+#      .geo declares no such number.
+# Usage: no_shell.sh SOFTOPT_EXECUTABLE SOURCE_DIR
+softopt=$1
+source=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+failures=0
+
+# The sphere octant's geometry beside the parameter files.
+cp "$source/meshes/sphere_octant.geo" sphere.geo
+common() { # $1: mesh file, $2: output directory, $3: mesh parameters
+  cat <<PRM
+set Output directory = $2
+set Print timings = false
+subsection Output
+  set VTU output = none
+end
+subsection Geometry
+  set Mesh file = $1
+  set Mesh size = 0.5
+  set Mesh parameters = $3
+  set Dirichlet boundaries = 1: x; 2: y; 3: z
+  set Pressure boundary ids = 4
+  set Design boundary ids = 5
+end
+subsection Material
+  set Young's modulus = 3
+  set Poisson's ratio = 0.49
+end
+subsection Loading
+  set Pressure = 100
+end
+subsection Optimization
+  set Maximum iterations = 1
+  set Checkpoint interval = 0
+  set Final analysis steps = 1
+  set Design bound = 0.05
+end
+subsection Objective 1
+  set Direction field = inward radial
+end
+PRM
+}
+
+check() { # $1: probe name, $2: planted file, $3: exit code, $4: expected ("ok" or "refused")
+  if [ -e "$2" ]; then
+    echo "FAIL $1: the planted command ran (it created $2)"; failures=$((failures + 1))
+  elif [ "$4" = ok ] && [ "$3" -ne 0 ]; then
+    echo "FAIL $1: exit code $3 (expected 0)"; cat log; failures=$((failures + 1))
+  elif [ "$4" = refused ] && [ "$3" -eq 0 ]; then
+    echo "FAIL $1: exit code 0 (expected a refusal)"; failures=$((failures + 1))
+  else
+    echo "ok   $1: nothing ran (exit code $3)"
+  fi
+}
+
+# 1. The output directory through the plotting call.
+common sphere.geo "o'\$(touch planted_1)'x" "" > output.prm
+"$softopt" optimize output.prm > log 2>&1
+code=$?
+check "Output directory" planted_1 $code ok
+if [ $code -eq 0 ] && ! grep -q "Wrote history.png" log; then
+  echo "FAIL Output directory: the plots were not made"; failures=$((failures + 1))
+fi
+
+# 2. The mesh file's name through the gmsh call.
+cp sphere.geo 'inj"$(touch planted_2)".geo'
+common 'inj"$(touch planted_2)".geo' results-2 "" > mesh.prm
+"$softopt" analyze mesh.prm > log 2>&1
+check "Mesh file" planted_2 $? ok
+
+# 3. A mesh parameter's name: refused, with the names the .geo declares.
+common sphere.geo results-3 'r$(touch planted_3): 10' > parameters.prm
+"$softopt" analyze parameters.prm > log 2>&1
+code=$?
+check "Mesh parameters" planted_3 $code refused
+if [ $code -ne 0 ] && ! grep -q 'is not declared by DefineConstant' log; then
+  echo "FAIL Mesh parameters: the message does not name the undeclared number:"
+  cat log; failures=$((failures + 1))
+fi
+exit $failures
