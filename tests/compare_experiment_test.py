@@ -1,12 +1,21 @@
 #!/usr/bin/env python3
 """Test of scripts/compare_experiment on synthetic data (issue 7).
 
-A known cavity curve Delta V^p(p), a known compliance quadratic and the
-ideal gas law give synthetic syringe volumes
-    V_syringe = Delta V^p(p) + p/(p + p0) V^p + Delta V_compliance(p);
-the script's correction must recover Delta V^p to round-off, both through its
-functions and end to end through its command line.  Bad inputs must fail with
-a message naming the file.
+The synthetic data and the expected results are written out here in closed
+form, never computed with the script's own functions (a wrong formula in the
+script must not also make the data it is tested on).  The model, from the
+script's documentation and doc/examples/bench/README.md:
+
+    V_syringe = Delta V^p(p) + p/(p + p0) V^p + Delta V_compliance(p),
+    Delta V_compliance(p) = c0 + c1 p + c2 p^2  (least-squares quadratic),
+
+with a known cavity curve Delta V^p(p) (cavity_curve), known c0, c1, c2
+(compliance_exact: 2.5 + 31 p - 0.35 p^2 mm^3) and V^p, p0.  The script must
+recover c0, c1, c2 from compliance data (exactly quadratic, and quadratic
+plus a residual orthogonal to 1, p, p^2 whose R^2 and RMS are known), and
+Delta V^p to round-off from the syringe volumes, both through its functions
+and end to end through its command line.  Bad inputs must fail with a
+message naming the file.
 
 Markers (--markers): marker displacements sampled from the simulated curves
 of tracked_points.csv, in other units and with a subset of the components,
@@ -15,7 +24,9 @@ functions, to the printed digits in comparison.md); bad marker files and
 markers the simulation does not track must fail with a message naming the
 file.
 
-Run: python3 tests/compare_experiment_test.py  (from any directory).
+Every check prints its verdict against its threshold (stderr).
+Run: python3 tests/compare_experiment_test.py  (from any directory; the
+script is found as ../scripts/compare_experiment next to this file).
 """
 
 import os
@@ -46,6 +57,7 @@ _ensure_numpy()
 
 import importlib.machinery  # noqa: E402
 import importlib.util  # noqa: E402
+import re  # noqa: E402
 import tempfile  # noqa: E402
 import unittest  # noqa: E402
 
@@ -69,9 +81,11 @@ ce = load_script()
 
 P0 = 101.325                            # kPa
 CAVITY = 14600.0                        # V^p [mm^3]
-COMPLIANCE = (2.5, 31.0, -0.35)         # mm^3, mm^3/kPa, mm^3/kPa^2
+C0, C1, C2 = 2.5, 31.0, -0.35           # mm^3, mm^3/kPa, mm^3/kPa^2
+COMPLIANCE = (C0, C1, C2)
 P = np.linspace(0.0, 15.0, 61)          # measured pressures [kPa], 0.25 apart
 P_SIM = np.linspace(0.0, 15.0, 21)      # simulated pressures, 0.75 apart
+PSI = 6.894757293168361                 # kPa per psi (6894.757293168361 Pa)
 
 
 def cavity_curve(p):
@@ -79,10 +93,32 @@ def cavity_curve(p):
     return 175.0 * p + 1.8 * p**2 + 60.0 * np.sin(p / 4.0)
 
 
+def compliance_exact(p):
+    """Known syringe/tubing compliance Delta V_compliance(p) [mm^3], written
+    out here (not the script's compliance_volume): 2.5 + 31 p - 0.35 p^2."""
+    return C0 + C1 * p + C2 * p**2
+
+
+def gas_volume(p):
+    """Compressed air of the cavity, p/(p + p0) V^p [mm^3] (Eq. dV)."""
+    return p / (p + P0) * CAVITY
+
+
 def syringe_volume(p):
     """Forward model: what the syringe pump dispenses [mm^3]."""
-    return (cavity_curve(p) + p / (p + P0) * CAVITY
-            + ce.compliance_volume(p, COMPLIANCE))
+    return cavity_curve(p) + gas_volume(p) + compliance_exact(p)
+
+
+def orthogonal_residual(p):
+    """A residual orthogonal, over the measured pressures P, to 1, p and p^2,
+    so that a least-squares quadratic of compliance_exact + this must still
+    return c0, c1, c2.  At P, x = 4p - 30 runs over the integers -m .. m
+    (m = 30), and x^3 - a x is odd (orthogonal to 1 and x^2) and orthogonal
+    to x for a = sum x^4 / sum x^2 = (3m^2 + 3m - 1)/5 = 557.8 (sum x^2 =
+    m(m+1)(2m+1)/3, sum x^4 = m(m+1)(2m+1)(3m^2+3m-1)/15).  Amplitude
+    0.103 mm^3 at most."""
+    x = 4.0 * np.asarray(p, dtype=float) - 30.0
+    return 1e-5 * (x**3 - 557.8 * x)
 
 
 def write_csv(path, header, columns, comment="synthetic test data"):
@@ -92,49 +128,132 @@ def write_csv(path, header, columns, comment="synthetic test data"):
             f.write(",".join(repr(float(x)) for x in row) + "\n")
 
 
-class Formulas(unittest.TestCase):
+class Checks(unittest.TestCase):
+    """Assertions that print their verdict against their threshold."""
+
+    def say(self, text):
+        """One verdict line under unittest's "test ... " line (stderr)."""
+        if not getattr(self, "_said", False):
+            self._said = True
+            print(file=sys.stderr)
+        print(f"    {text}", file=sys.stderr)
+
+    def check(self, what, ok, detail=""):
+        self.say(f"{what}: {'ok' if ok else 'FAIL'}")
+        self.assertTrue(ok, f"{what} {detail}")
+
+    def check_below(self, what, error, limit, unit="", strict=True):
+        """error < limit (or <= if not strict)."""
+        ok = bool(error < limit if strict else error <= limit)
+        self.say(f"{what}: error {error:.3g}{unit} "
+                 f"({'<' if strict else '<='} {limit:.3g}{unit}) "
+                 f"{'ok' if ok else 'FAIL'}")
+        self.assertTrue(ok, f"{what}: error {error:.6g} not "
+                        f"{'<' if strict else '<='} {limit:.6g}")
+
+    def check_close(self, what, actual, expected, rtol, atol, unit=""):
+        """|actual - expected| <= atol + rtol |expected| everywhere (the
+        test of np.testing.assert_allclose)."""
+        actual = np.asarray(actual, dtype=float)
+        expected = np.asarray(expected, dtype=float)
+        self.assertEqual(actual.shape, expected.shape, what)
+        error = np.abs(actual - expected)
+        ok = bool(np.all(error <= atol + rtol * np.abs(expected)))
+        limit = " + ".join([f"{atol:g}{unit}"] * (atol != 0)
+                           + [f"{rtol:g} |expected|"] * (rtol != 0)) or "0"
+        self.say(f"{what}: {'max ' * (error.size > 1)}error "
+                 f"{np.max(error):.3g}{unit} (<= {limit}) "
+                 f"{'ok' if ok else 'FAIL'}")
+        self.assertTrue(ok, f"{what}: errors {error} above {atol:g} + "
+                        f"{rtol:g} |{expected}|")
+
+
+class Formulas(Checks):
+    def test_compliance_volume_is_the_quadratic(self):
+        self.check_close("compliance_volume(p) vs 2.5 + 31 p - 0.35 p^2",
+                         ce.compliance_volume(P, COMPLIANCE),
+                         compliance_exact(P), rtol=0, atol=1e-10,
+                         unit=" mm^3")
+
     def test_compliance_fit_is_exact_for_quadratic_data(self):
-        coefficients, r2, rms = ce.fit_compliance(
-            P, ce.compliance_volume(P, COMPLIANCE))
-        np.testing.assert_allclose(coefficients, COMPLIANCE, rtol=1e-10,
-                                   atol=1e-10)
-        self.assertAlmostEqual(r2, 1.0, places=12)
-        self.assertLess(rms, 1e-10)
+        coefficients, r2, rms = ce.fit_compliance(P, compliance_exact(P))
+        for name, unit, value, exact in zip(
+                ("c0", "c1", "c2"), (" mm^3", " mm^3/kPa", " mm^3/kPa^2"),
+                coefficients, COMPLIANCE):
+            self.check_close(f"compliance {name} = {value:.6g}{unit} "
+                             f"(exact {exact:g})", value, exact, rtol=1e-10,
+                             atol=1e-10, unit=unit)
+        # assertAlmostEqual(r2, 1, places=12): |r2 - 1| rounds to 0 at 12
+        # decimal places
+        self.check_below(f"R^2 = {r2:.15f} (exact 1)", abs(r2 - 1.0), 5e-13,
+                         strict=False)
+        self.check_below("RMS residual (exact 0)", rms, 1e-10, " mm^3")
+
+    def test_compliance_fit_is_least_squares(self):
+        # Data off the quadratic by a residual orthogonal to it: the fit
+        # must still give c0, c1, c2, and R^2 and the RMS residual of that
+        # residual, written out here from their definitions.
+        r = orthogonal_residual(P)
+        basis = np.column_stack([np.ones_like(P), P, P**2])
+        self.check_below("test data: residual orthogonal to 1, p, p^2",
+                         np.max(np.abs(basis.T @ r)), 1e-9)
+        v = compliance_exact(P) + r
+        coefficients, r2, rms = ce.fit_compliance(P, v)
+        for name, unit, value, exact in zip(
+                ("c0", "c1", "c2"), (" mm^3", " mm^3/kPa", " mm^3/kPa^2"),
+                coefficients, COMPLIANCE):
+            self.check_close(f"compliance {name} = {value:.6g}{unit} "
+                             f"(exact {exact:g})", value, exact, rtol=1e-10,
+                             atol=1e-10, unit=unit)
+        rms_exact = np.sqrt(np.mean(r**2))
+        r2_exact = 1.0 - np.sum(r**2) / np.sum((v - np.mean(v))**2)
+        self.check_close(f"RMS residual {rms:.6g} mm^3 (exact "
+                         f"{rms_exact:.6g})", rms, rms_exact, rtol=1e-9,
+                         atol=0)
+        self.check_close(f"R^2 = {r2:.12f} (exact {r2_exact:.12f})", r2,
+                         r2_exact, rtol=0, atol=1e-12)
 
     def test_recovers_cavity_curve(self):
-        coefficients, _, _ = ce.fit_compliance(
-            P, ce.compliance_volume(P, COMPLIANCE))
-        recovered = ce.correct_volume(syringe_volume(P), P, coefficients,
-                                      CAVITY, P0)
         scale = np.max(np.abs(cavity_curve(P)))
-        error = np.max(np.abs(recovered - cavity_curve(P)))
-        print(f"\nmax recovery error {error:.3g} mm^3 "
-              f"(curve scale {scale:.0f} mm^3)", file=sys.stderr)
-        self.assertLess(error, 1e-9 * scale)
+        fitted, _, _ = ce.fit_compliance(P, compliance_exact(P))
+        for label, coefficients in (("fitted", fitted),
+                                    ("exact", COMPLIANCE)):
+            recovered = ce.correct_volume(syringe_volume(P), P, coefficients,
+                                          CAVITY, P0)
+            error = np.max(np.abs(recovered - cavity_curve(P)))
+            self.check_below(f"Delta V^p recovered with the {label} "
+                             f"compliance (curve scale {scale:.0f} mm^3)",
+                             error, 1e-9 * scale, " mm^3")
 
     def test_without_compliance_only_gas_law(self):
-        v = cavity_curve(P) + P / (P + P0) * CAVITY
-        np.testing.assert_allclose(ce.correct_volume(v, P, None, CAVITY, P0),
-                                   cavity_curve(P), rtol=0, atol=1e-9)
+        v = cavity_curve(P) + gas_volume(P)
+        self.check_close("Delta V^p = V_syringe - p/(p + p0) V^p",
+                         ce.correct_volume(v, P, None, CAVITY, P0),
+                         cavity_curve(P), rtol=0, atol=1e-9, unit=" mm^3")
 
     def test_units_and_flow_rate(self):
         with tempfile.TemporaryDirectory() as tmp:
             path = os.path.join(tmp, "psi.csv")
             write_csv(path, ["time_min", "pressure_psi", "syringe_volume_ml"],
-                      [P / 60, P / 6.894757293168361, syringe_volume(P) / 1e3])
+                      [P / 60, P / PSI, syringe_volume(P) / 1e3])
             p, v = ce.read_measurement(path)
-            np.testing.assert_allclose(p, P, rtol=1e-14, atol=1e-14)
-            np.testing.assert_allclose(v, syringe_volume(P), rtol=1e-14)
-            # volume from time: 6 ml/min for time_s seconds
+            self.check_close("psi -> kPa", p, P, rtol=1e-14, atol=1e-14,
+                             unit=" kPa")
+            self.check_close("ml -> mm^3", v, syringe_volume(P), rtol=1e-14,
+                             atol=0, unit=" mm^3")
+            # volume from time: 6 ml/min = 100 mm^3/s for time_s seconds
             path = os.path.join(tmp, "time.csv")
             write_csv(path, ["time_s", "pressure [Pa]"], [P, 1000 * P])
             with self.assertRaisesRegex(ce.InputError, "time.csv.*flow-rate"):
                 ce.read_measurement(path)
+            self.say("time without --flow-rate: InputError naming time.csv: "
+                     "ok")
             p, v = ce.read_measurement(path, flow_rate=6.0)
-            np.testing.assert_allclose(v, 100.0 * P, rtol=1e-14)
+            self.check_close("6 ml/min * t = 100 mm^3/s * t", v, 100.0 * P,
+                             rtol=1e-14, atol=0, unit=" mm^3")
 
 
-class ScriptRun(unittest.TestCase):
+class ScriptRun(Checks):
     """A temporary folder, and the script run in it."""
 
     def setUp(self):
@@ -167,13 +286,13 @@ class CommandLine(ScriptRun):
         self.compliance = os.path.join(self.dir, "compliance.csv")
         pc = np.linspace(0.0, 20.0, 41)
         write_csv(self.compliance, ["pressure_Pa", "syringe_volume_ml"],
-                  [1000 * pc, ce.compliance_volume(pc, COMPLIANCE) / 1000])
+                  [1000 * pc, compliance_exact(pc) / 1000])
         self.runs = []
         for i, (p_name, p_factor) in enumerate([("pressure_kPa", 1.0),
                                                 ("pressure_Pa", 1000.0),
                                                 ("pressure_psi", 1.0)]):
             path = os.path.join(self.dir, f"run{i + 1}.csv")
-            p = P if p_name != "pressure_psi" else P / 6.894757293168361
+            p = P if p_name != "pressure_psi" else P / PSI
             write_csv(path, ["time_s", p_name, "syringe_volume_mm3"],
                       [P, p * p_factor, syringe_volume(P)])
             self.runs.append(path)
@@ -183,22 +302,41 @@ class CommandLine(ScriptRun):
         result = self.run_cli("--simulation", self.sim, "--compliance",
                               self.compliance, "--run", self.runs[0],
                               "--run", *self.runs[1:], "--output-dir", out)
-        self.assertEqual(result.returncode, 0, result.stderr)
-        self.assertIn("R^2 = 1.000000", result.stdout)
+        self.check("exit status 0", result.returncode == 0, result.stderr)
+        self.check("stdout reports R^2 = 1.000000",
+                   "R^2 = 1.000000" in result.stdout, result.stdout)
+        # the fitted compliance as printed (6 significant digits)
+        match = re.search(r"c0 = (\S+) mm\^3, c1 = (\S+) mm\^3/kPa, "
+                          r"c2 = (\S+) mm\^3/kPa\^2", result.stdout)
+        self.check("stdout reports c0, c1, c2", match is not None,
+                   result.stdout)
+        for name, text, exact in zip(("c0", "c1", "c2"), match.groups(),
+                                     COMPLIANCE):
+            self.check_close(f"printed compliance {name} = {text} (exact "
+                             f"{exact:g})", float(text), exact, rtol=1e-5,
+                             atol=0)
         png = os.path.join(out, "pressure_volume.png")
         with open(png, "rb") as f:
-            self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
+            self.check("pressure_volume.png is a PNG",
+                       f.read(8) == b"\x89PNG\r\n\x1a\n")
         with open(os.path.join(out, "comparison.md")) as f:
             rows = [line for line in f if line.startswith("| ")
                     and line[2].isdigit()]
-        self.assertEqual(len(rows), 5)
+        self.check(f"comparison.md has {len(rows)} rows (5)", len(rows) == 5)
         for row in rows:
             cells = [c.strip() for c in row.strip().strip("|").split("|")]
             p, sim, diff, pct = (float(cells[0]), float(cells[1]),
                                  float(cells[5]), float(cells[6]))
-            self.assertAlmostEqual(sim, float(cavity_curve(p)), delta=0.06)
-            self.assertLessEqual(abs(diff), 0.005, row)
-            self.assertLessEqual(abs(pct), 0.005, row)
+            exact = float(cavity_curve(p))
+            self.check_below(f"p = {p:.2f} kPa: simulated {sim:.1f} mm^3 vs "
+                             f"Delta V^p = {exact:.3f}", abs(sim - exact),
+                             0.06, " mm^3", strict=False)
+            self.check_below(f"p = {p:.2f} kPa: sim - meas = {cells[5]} "
+                             f"mm^3 (exact 0)", abs(diff), 0.005, " mm^3",
+                             strict=False)
+            self.check_below(f"p = {p:.2f} kPa: sim - meas = {cells[6]} % "
+                             f"(exact 0)", abs(pct), 0.005, " %",
+                             strict=False)
         # the same, computed by the functions, to round-off
         p_sim, dv_sim, v0 = ce.read_simulation(self.sim)
         coefficients, _, _ = ce.fit_compliance(
@@ -206,14 +344,17 @@ class CommandLine(ScriptRun):
         runs = [(p, ce.correct_volume(v, p, coefficients, v0, P0))
                 for p, v in map(ce.read_measurement, self.runs)]
         for row in ce.comparison_rows(p_sim, dv_sim, runs):
-            self.assertLess(abs(row[6]), 1e-9 * np.max(dv_sim))
+            self.check_below(f"functions, p = {row[0]:.2f} kPa: sim - meas "
+                             f"(exact 0)", abs(row[6]),
+                             1e-9 * np.max(dv_sim), " mm^3")
 
     def test_without_compliance_says_so(self):
         result = self.run_cli("--simulation", self.sim, "--run",
                               self.runs[0])
-        self.assertEqual(result.returncode, 0, result.stderr)
-        self.assertIn("NOT corrected", result.stdout)
-        self.assertTrue(os.path.exists(
+        self.check("exit status 0", result.returncode == 0, result.stderr)
+        self.check("stdout says NOT corrected",
+                   "NOT corrected" in result.stdout, result.stdout)
+        self.check("comparison.md written", os.path.exists(
             os.path.join(self.dir, "comparison.md")))
 
     def test_pressure_outside_simulation_warns(self):
@@ -222,8 +363,10 @@ class CommandLine(ScriptRun):
         write_csv(path, ["pressure_kPa", "syringe_volume_mm3"],
                   [p, syringe_volume(p)])
         result = self.run_cli("--simulation", self.sim, "--run", path)
-        self.assertEqual(result.returncode, 0, result.stderr)
-        self.assertRegex(result.stderr, "warning: .*high.csv.*outside")
+        self.check("exit status 0", result.returncode == 0, result.stderr)
+        self.check("warning: high.csv ... outside", re.search(
+            "warning: .*high.csv.*outside", result.stderr) is not None,
+            result.stderr)
 
     def assert_fails(self, name, header, columns, message, lines=None):
         path = os.path.join(self.dir, name)
@@ -233,10 +376,7 @@ class CommandLine(ScriptRun):
             with open(path, "w") as f:
                 f.write(lines)
         result = self.run_cli("--simulation", self.sim, "--run", path)
-        self.assertNotEqual(result.returncode, 0)
-        self.assertIn(name, result.stderr)
-        self.assertRegex(result.stderr, message)
-        self.assertNotIn("Traceback", result.stderr)
+        check_failure(self, name, name, message, result)
 
     def test_bad_inputs(self):
         v = syringe_volume(P)
@@ -256,6 +396,17 @@ class CommandLine(ScriptRun):
         self.assert_fails("empty.csv", None, None, "empty", lines="# x\n")
         self.assert_fails("header_only.csv", None, None, "no data",
                           lines="pressure_kPa,syringe_volume_ml\n")
+
+
+def check_failure(test, name, named, message, result):
+    """The script failed (non-zero exit) with a message naming the file
+    `named` and matching `message`, without a traceback."""
+    ok = (result.returncode != 0 and named in result.stderr
+          and re.search(message, result.stderr) is not None
+          and "Traceback" not in result.stderr)
+    test.check(f"{name}: rejected (exit {result.returncode}), message names "
+               f"{os.path.basename(named)} and matches /{message}/", ok,
+               result.stderr)
 
 
 # Known displacement curves u(p) [mm] of two tracked points, and their nodes.
@@ -305,7 +456,7 @@ class Markers(ScriptRun):
                   columns)
         self.run1 = os.path.join(self.dir, "run1.csv")
         write_csv(self.run1, ["pressure_kPa", "syringe_volume_mm3"],
-                  [P, cavity_curve(P) + P / (P + P0) * CAVITY])
+                  [P, cavity_curve(P) + gas_volume(P)])
         # The "video": pressure in Pa, tip in mm (all components), side in
         # micrometres (u_x, u_z only, bracket style), and a frame column.
         self.markers = os.path.join(self.dir, "markers.csv")
@@ -317,36 +468,46 @@ class Markers(ScriptRun):
                    tip[:, 2], 1000 * side[:, 0], 1000 * side[:, 2]])
 
     def test_column_names(self):
-        self.assertEqual(ce.split_marker_column("tip_ux_mm"), ("tip", 0, "mm"))
-        self.assertEqual(ce.split_marker_column("left_2_uZ [µm]"),
-                         ("left_2", 2, "um"))
-        self.assertEqual(ce.split_marker_column("tip_uy"), ("tip", 1, None))
-        self.assertIsNone(ce.split_marker_column("frame"))
+        for name, expected in (("tip_ux_mm", ("tip", 0, "mm")),
+                               ("left_2_uZ [µm]", ("left_2", 2, "um")),
+                               ("tip_uy", ("tip", 1, None)),
+                               ("frame", None)):
+            parsed = ce.split_marker_column(name)
+            self.check(f"split_marker_column({name!r}) = {parsed} "
+                       f"(expected {expected})", parsed == expected)
 
     def test_marker_named_like_a_quantity(self):
         path = os.path.join(self.dir, "port.csv")
         write_csv(path, ["pressure_kPa", "pressure_port_ux_mm"],
                   [np.array([0.0, 1.0]), np.array([0.0, 0.5])])
         p, markers = ce.read_markers(path)
-        self.assertEqual(list(p), [0.0, 1.0])
-        self.assertEqual(list(markers["pressure_port"][0]), [0.0, 0.5])
+        self.check(f"pressure column: {list(p)} (expected [0.0, 1.0])",
+                   list(p) == [0.0, 1.0])
+        u = list(markers.get("pressure_port", {}).get(0, []))
+        self.check(f"marker pressure_port u_x: {u} (expected [0.0, 0.5])",
+                   u == [0.0, 0.5])
 
     def test_differences_vanish(self):
         p_sim, points = ce.read_tracked(
             os.path.join(self.dir, "tracked_points.csv"))
         p, markers = ce.read_markers(self.markers)
-        np.testing.assert_allclose(p, P, rtol=1e-14, atol=1e-14)
-        self.assertEqual(sorted(markers["side"]), [0, 2])
-        np.testing.assert_allclose(markers["side"][2],
-                                   simulated_curve("side", P)[:, 2],
-                                   rtol=1e-13, atol=1e-15)
+        self.check_close("Pa -> kPa", p, P, rtol=1e-14, atol=1e-14,
+                         unit=" kPa")
+        self.check(f"side components {sorted(markers['side'])} (expected "
+                   f"[0, 2])", sorted(markers["side"]) == [0, 2])
+        self.check_close("side u_z, um -> mm", markers["side"][2],
+                         simulated_curve("side", P)[:, 2], rtol=1e-13,
+                         atol=1e-15, unit=" mm")
         rows = ce.marker_rows(p_sim, points, p, markers)
-        self.assertEqual(len(rows), 6)
+        self.check(f"{len(rows)} marker rows (6)", len(rows) == 6)
         for marker, pressure, sim, meas, diff, norm in rows:
             exact = simulated_curve(marker, [pressure])[0]
-            np.testing.assert_allclose(sim, exact, rtol=0, atol=1e-12)
-            self.assertLess(norm, 1e-12, (marker, pressure))
-        self.assertTrue(np.isnan(rows[-1][4][1]))  # side u_y: not measured
+            self.check_close(f"{marker}, p = {pressure:.2f} kPa: simulated u",
+                             sim, exact, rtol=0, atol=1e-12, unit=" mm")
+            self.check_below(f"{marker}, p = {pressure:.2f} kPa: |sim - meas| "
+                             f"(exact 0)", norm, 1e-12, " mm")
+        self.check("side u_y not measured: NaN",
+                   bool(np.isnan(rows[-1][4][1])))
 
     def marker_table_rows(self, path):
         with open(path) as f:
@@ -358,46 +519,57 @@ class Markers(ScriptRun):
         out = os.path.join(self.dir, "out")
         result = self.run_cli("--simulation", self.sim, "--run", self.run1,
                               "--markers", self.markers, "--output-dir", out)
-        self.assertEqual(result.returncode, 0, result.stderr)
-        self.assertRegex(result.stderr, "warning: .*markers.csv.*ignored "
-                         "columns frame")
+        self.check("exit status 0", result.returncode == 0, result.stderr)
+        self.check("warning: markers.csv ... ignored columns frame",
+                   re.search("warning: .*markers.csv.*ignored columns frame",
+                             result.stderr) is not None, result.stderr)
         for png in ("pressure_volume.png", "markers.png"):
             with open(os.path.join(out, png), "rb") as f:
-                self.assertEqual(f.read(8), b"\x89PNG\r\n\x1a\n")
+                self.check(f"{png} is a PNG",
+                           f.read(8) == b"\x89PNG\r\n\x1a\n")
         md = os.path.join(out, "comparison.md")
         with open(md) as f:
             text = f.read()
-        self.assertIn("# Simulated vs measured cavity volume change", text)
-        self.assertIn("## Marker displacements", text)
-        self.assertIn("tip: simulated at the surface node (60.00, 0.00, "
-                      "11.50) mm; measured u_x, u_y, u_z", text)
+        for heading in ("# Simulated vs measured cavity volume change",
+                        "## Marker displacements",
+                        "tip: simulated at the surface node (60.00, 0.00, "
+                        "11.50) mm; measured u_x, u_y, u_z"):
+            self.check(f"comparison.md holds {heading!r}", heading in text)
         rows = self.marker_table_rows(md)
-        self.assertEqual(len(rows), 6)
+        self.check(f"{len(rows)} marker rows (6)", len(rows) == 6)
         for row in rows:
             p = float(row[1])
             sim = [float(x) for x in row[2].split(",")]
-            np.testing.assert_allclose(sim, simulated_curve(row[0], [p])[0],
-                                       rtol=0, atol=6e-4)
-            for x in row[4].split(","):
-                if x.strip() != "–":
-                    self.assertLessEqual(abs(float(x)), 5e-4, row)
-            self.assertLessEqual(float(row[5]), 5e-4, row)
-        self.assertEqual([r[4].split(",")[1].strip() for r in rows
-                          if r[0] == "side"], ["–"] * 3)
+            self.check_close(f"{row[0]}, p = {p:.2f} kPa: simulated u as "
+                             f"printed", sim, simulated_curve(row[0], [p])[0],
+                             rtol=0, atol=6e-4, unit=" mm")
+            diffs = [abs(float(x)) for x in row[4].split(",")
+                     if x.strip() != "–"]
+            self.check_below(f"{row[0]}, p = {p:.2f} kPa: sim - meas "
+                             f"{row[4]} (exact 0)", max(diffs), 5e-4, " mm",
+                             strict=False)
+            self.check_below(f"{row[0]}, p = {p:.2f} kPa: |sim - meas| "
+                             f"{row[5]} (exact 0)", float(row[5]), 5e-4,
+                             " mm", strict=False)
+        self.check("side u_y printed as –", [
+            r[4].split(",")[1].strip() for r in rows if r[0] == "side"]
+            == ["–"] * 3)
 
     def test_markers_without_runs(self):
         result = self.run_cli("--simulation", self.sim, "--markers",
                               self.markers)
-        self.assertEqual(result.returncode, 0, result.stderr)
+        self.check("exit status 0", result.returncode == 0, result.stderr)
         with open(os.path.join(self.dir, "comparison.md")) as f:
-            self.assertTrue(f.read().startswith(
-                "# Simulated vs measured marker displacements"))
-        self.assertFalse(os.path.exists(
+            self.check("comparison.md starts with the marker heading",
+                       f.read().startswith(
+                           "# Simulated vs measured marker displacements"))
+        self.check("no pressure_volume.png", not os.path.exists(
             os.path.join(self.dir, "pressure_volume.png")))
         # neither --run nor --markers: a usage error
         result = self.run_cli("--simulation", self.sim)
-        self.assertEqual(result.returncode, 2)
-        self.assertIn("--run", result.stderr)
+        self.check(f"neither --run nor --markers: exit {result.returncode} "
+                   f"(2), message names --run", result.returncode == 2
+                   and "--run" in result.stderr, result.stderr)
 
     def assert_fails(self, name, header, columns, message, lines=None,
                      tracked=None):
@@ -411,11 +583,9 @@ class Markers(ScriptRun):
         if tracked:
             args += ["--tracked", tracked]
         result = self.run_cli(*args, "--output-dir", "bad")
-        self.assertNotEqual(result.returncode, 0)
-        self.assertIn(tracked or name, result.stderr)
-        self.assertRegex(result.stderr, message)
-        self.assertNotIn("Traceback", result.stderr)
-        self.assertFalse(os.path.exists(os.path.join(self.dir, "bad")))
+        check_failure(self, name, tracked or name, message, result)
+        self.check(f"{name}: nothing written", not os.path.exists(
+            os.path.join(self.dir, "bad")))
 
     def test_bad_marker_data(self):
         u = marker_curve("tip", P)[:, 0]

@@ -56,10 +56,10 @@ check(const softopt::Material &material)
       const double coupling_error =
         (dPdp - material.pressure_coupling(F)).norm() / dPdp.norm();
 
-      deallog << "J = " << J << ": relative error of P " << error(P_error / P_norm)
-              << ", of A " << error(A_error / A_norm) << ", of dW/dp "
-              << error(pressure_error) << ", of dP/dp " << error(coupling_error)
-              << std::endl;
+      deallog << "J = " << J << ": relative error of P " << below(P_error / P_norm, 1e-8)
+              << ", of A " << below(A_error / A_norm, 1e-8) << ", of dW/dp "
+              << below(pressure_error, 1e-10) << ", of dP/dp "
+              << below(coupling_error, 1e-10) << std::endl;
     }
 
   // At small strain the law reduces to Hooke's, sigma = 2G eps + lambda
@@ -105,11 +105,11 @@ main(int argc, char **argv)
                         L[0][1] * (L[1][0] * L[2][2] - L[1][2] * L[2][0]) +
                         L[0][2] * (L[1][0] * L[2][1] - L[1][1] * L[2][0]) - 1.L);
   const double naive = determinant(unit_symmetric_tensor<3>() + H) - 1;
-  const auto below = [&](const double value) {
+  const auto relative = [&](const double value) {
     return std::abs(value - exact) < 1e-11 * std::abs(exact) ? "below 1e-11" :
                                                                "above 1e-11";
   };
   deallog << "|H| = 1e-7: relative error of jacobian_minus_one "
-          << below(softopt::jacobian_minus_one(H)) << ", of det(F) - 1 "
-          << below(naive) << std::endl;
+          << relative(softopt::jacobian_minus_one(H)) << ", of det(F) - 1 "
+          << relative(naive) << std::endl;
 }

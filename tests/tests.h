@@ -9,6 +9,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/tria.h>
 
+#include <softopt/base/seeded_random.h>
 #include <softopt/geometry/geometry.h>
 #include <softopt/physics/material.h>
 
@@ -87,13 +88,38 @@ namespace softopt_tests
     return s.str();
   }
 
+  /**
+   * A small number with its verdict, "2.1e-09 (< 1e-08)" or "2.1e-07 (NOT <
+   * 1e-08)": numdiff's absolute tolerance of 1e-6 passes any two numbers
+   * below it, so the words carry the check.
+   */
+  inline std::string
+  below(const double e, const double bound)
+  {
+    std::ostringstream b;
+    b << std::scientific << std::setprecision(0) << bound;
+    return error(e) + (std::abs(e) < bound ? " (< " : " (NOT < ") + b.str() + ")";
+  }
+
+  /** The observed order log(e_1 / e_2) / log(h_1 / h_2) of two errors at
+   * steps h_1 > h_2, with its verdict against @p minimum. */
+  inline std::string
+  rate(const double e_1, const double e_2, const double h_1, const double h_2,
+       const double minimum = 1.9)
+  {
+    const double       r = std::log(e_1 / e_2) / std::log(h_1 / h_2);
+    std::ostringstream s;
+    s << "rate " << std::fixed << std::setprecision(2) << r
+      << (r >= minimum ? " (>= " : " (NOT >= ") << std::setprecision(1) << minimum << ")";
+    return s.str();
+  }
+
   /** A deterministic pseudo-random number in [-1, 1] for index i, the same
-   * on any number of MPI ranks. */
+   * on any number of MPI ranks (softopt::seeded_random). */
   inline double
   random(const unsigned long i, const unsigned int seed = 1)
   {
-    const double x = std::sin(12.9898 * (i + 1) + 78.233 * seed) * 43758.5453;
-    return 2. * (x - std::floor(x)) - 1.;
+    return softopt::seeded_random(i, seed);
   }
 
   /**

@@ -5,6 +5,7 @@
 #include <softopt/app/analysis.h>
 #include <softopt/io/output_directory.h>
 #include <softopt/functionals/design_surface.h>
+#include <softopt/functionals/direction_field.h>
 #include <softopt/io/csv_writer.h>
 #include <softopt/io/pvd_series.h>
 #include <softopt/io/tracked_points.h>
@@ -27,16 +28,10 @@ namespace softopt
     {
       if (problem.get_geometry().design_boundary_ids.empty())
         return {std::nan(""), std::nan("")};
-      const CellKernels::DirectionFunction x_axis{
-        [](const Point<3> &) { return Tensor<1, 3>({1., 0., 0.}); },
-        [](const Point<3> &) { return Tensor<2, 3>(); }};
-      const CellKernels::DirectionFunction inward{
-        [](const Point<3> &X) {
-          return Tensor<1, 3>({0., -X[1], -X[2]}) / std::hypot(X[1], X[2]);
-        },
-        [](const Point<3> &) { return Tensor<2, 3>(); }};
-      const auto s_x  = integrate_over_design_surface(problem, design, a, x_axis, false);
-      const auto s_in = integrate_over_design_surface(problem, design, a, inward, false);
+      static const auto x_axis = DirectionFields::create_default("constant");
+      static const auto inward = DirectionFields::create_default("inward radial");
+      const auto s_x  = integrate_over_design_surface(problem, design, a, *x_axis, false);
+      const auto s_in = integrate_over_design_surface(problem, design, a, *inward, false);
       return {s_x.linear / s_x.area, s_in.linear / s_in.area};
     }
   } // namespace
@@ -108,7 +103,7 @@ namespace softopt
                                    CsvWriter::format(mean_in)};
       for (const auto *f : functionals)
         row.push_back(CsvWriter::format(
-          f->evaluate(problem, design, state, nullptr, nullptr)));
+          f->evaluate_at(problem, design, state)));
       row.push_back(std::to_string(point.newton_iterations));
       row.push_back(CsvWriter::format(point.residual_norm));
       row.push_back(point.at_target ? "1" : "0");

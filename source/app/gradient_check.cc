@@ -1,6 +1,7 @@
 #include <deal.II/base/conditional_ostream.h>
 
 #include <softopt/app/gradient_check.h>
+#include <softopt/base/seeded_random.h>
 #include <softopt/io/output_directory.h>
 #include <softopt/io/csv_writer.h>
 #include <softopt/optimization/design_problem.h>
@@ -13,15 +14,6 @@ namespace softopt
 {
   namespace
   {
-    /** A reproducible pseudo-random number in [-1, 1] for a global index,
-     * the same on any number of MPI ranks. */
-    double
-    seeded_random(const types::global_dof_index i)
-    {
-      const double x = std::sin(12.9898 * (i + 1) + 78.233) * 43758.5453;
-      return 2. * (x - std::floor(x)) - 1.;
-    }
-
     /** Functional values at d0 + step dd, NaN where the design is refused;
      * @p x (warm starts) is then that design's. */
     std::vector<double>
@@ -66,9 +58,14 @@ namespace softopt
     pcout << "Gradient check at the initial design, design scale "
           << settings.optimization.design_bound << " mm:" << std::endl;
     for (unsigned int k = 0; k < functionals.size(); ++k)
-      pcout << "  " << functionals[k]->name() << " = " << std::setprecision(10)
-            << values[k] << " at load factor " << functionals[k]->load_factor()
-            << std::endl;
+      {
+        const auto &load_factors = functionals[k]->load_factors();
+        pcout << "  " << functionals[k]->name() << " = " << std::setprecision(10)
+              << values[k] << " at load factor" << (load_factors.size() > 1 ? "s " : " ");
+        for (unsigned int i = 0; i < load_factors.size(); ++i)
+          pcout << (i > 0 ? ", " : "") << load_factors[i];
+        pcout << std::endl;
+      }
 
     const OutputDirectory out(settings.output_directory, comm);
     out.write_parameters(settings.prm);

@@ -43,5 +43,15 @@ namespace softopt
                           input.where(subsection, "Direction field"))
         .create(prm, input, subsection);
     }
+
+
+
+    std::unique_ptr<DirectionField>
+    create_default(const std::string &name)
+    {
+      ParameterHandler prm;
+      declare_parameters(prm, name);
+      return create(prm, InputFile::in_code("the default " + name + " field"), "");
+    }
   } // namespace DirectionFields
 } // namespace softopt

@@ -1,17 +1,20 @@
 #include <deal.II/base/exceptions.h>
 
-#include <softopt/functionals/design_surface.h>
 #include <softopt/functionals/direction_field.h>
 #include <softopt/functionals/functional.h>
 
 namespace softopt
 {
-  Functional::Functional(const std::string &name,
-                         const Kind         kind,
-                         const double       load_factor)
+  Functional::Functional(const std::string              &name,
+                         const Kind                      kind,
+                         std::unique_ptr<const Quantity> quantity,
+                         const double                    scale,
+                         const double                    offset)
     : name_(name)
     , kind_(kind)
-    , load_factor_(load_factor)
+    , quantity(std::move(quantity))
+    , scale(scale)
+    , offset(offset)
   {}
 
 
@@ -32,127 +35,59 @@ namespace softopt
 
 
 
-  double
-  Functional::load_factor() const
+  const std::vector<double> &
+  Functional::load_factors() const
   {
-    return load_factor_;
+    return quantity->load_factors();
+  }
+
+
+
+  double
+  Functional::evaluate(const HyperelasticProblem &problem,
+                       const DesignConfiguration &design,
+                       const States              &states,
+                       Derivatives               *derivatives) const
+  {
+    const double Q = quantity->value(problem, design, states, derivatives);
+    if (derivatives != nullptr && scale != 1.)
+      {
+        for (auto &d : derivatives->d_da)
+          d *= scale;
+        derivatives->d_dX *= scale;
+      }
+    return scale * Q - offset;
+  }
+
+
+
+  double
+  Functional::evaluate_at(const HyperelasticProblem &problem,
+                          const DesignConfiguration &design,
+                          const Vector              &a) const
+  {
+    return evaluate(problem, design, States(load_factors().size(), &a), nullptr);
   }
 
 
 
   namespace
   {
-    CellKernels::DirectionFunction
-    as_function(const std::shared_ptr<DirectionField> &field)
-    {
-      return {[field](const Point<3> &X) { return field->value(X); },
-              [field](const Point<3> &X) { return field->gradient(X); }};
-    }
-
-    /** (d_top area - top d_area) / area^2, the derivative of top / area. */
+    /** The entries every Objective and Constraint subsection has: its
+     * load factor, the quantity with the entries of every registered one,
+     * and the direction field that several of them read. */
     void
-    quotient_derivative(const double                      top,
-                        const double                      area,
-                        const PETScWrappers::MPI::Vector &d_top,
-                        const PETScWrappers::MPI::Vector &d_area,
-                        const double                      factor,
-                        PETScWrappers::MPI::Vector       &result)
+    declare_common(ParameterHandler &prm, const std::string &default_quantity)
     {
-      result = d_top;
-      result *= factor / area;
-      result.add(-factor * top / (area * area), d_area);
+      prm.declare_entry("Load factor",
+                        "1",
+                        Patterns::Double(0),
+                        "The target load factor lambda at whose state the "
+                        "quantity is evaluated (pressure = load factor x "
+                        "Pressure).");
+      Quantities::declare_parameters(prm, default_quantity);
+      DirectionFields::declare_parameters(prm, "constant");
     }
-
-    /**
-     * A weighted mean over the design surface, minus an offset:
-     *   objective  g = w / |dOmega^d| int u . v dS            (Eq. g0),
-     *   constraint f = 1 / |dOmega^d| int (u . s)^2 dS - eps_u (Eq. constraint).
-     */
-    class SurfaceMean : public Functional
-    {
-    public:
-      /** Which moment of u . v is averaged. */
-      enum class Moment
-      {
-        linear,
-        quadratic
-      };
-
-      SurfaceMean(const std::string                     &name,
-                  const Kind                             kind,
-                  const double                           load_factor,
-                  const Moment                           moment,
-                  const double                           weight,
-                  const double                           offset,
-                  const std::shared_ptr<DirectionField> &field)
-        : Functional(name, kind, load_factor)
-        , moment(moment)
-        , weight(weight)
-        , offset(offset)
-        , direction(as_function(field))
-      {}
-
-      double
-      evaluate(const HyperelasticProblem        &problem,
-               const DesignConfiguration        &design,
-               const PETScWrappers::MPI::Vector &a,
-               PETScWrappers::MPI::Vector       *d_da,
-               PETScWrappers::MPI::Vector       *d_dX) const override
-      {
-        const bool derivatives = d_da != nullptr;
-        const auto s =
-          integrate_over_design_surface(problem, design, a, direction, derivatives);
-        const bool   linear = moment == Moment::linear;
-        const double top    = linear ? s.linear : s.quadratic;
-        if (derivatives)
-          {
-            *d_da = linear ? s.d_linear_da : s.d_quadratic_da;
-            *d_da *= weight / s.area;
-            quotient_derivative(top,
-                                s.area,
-                                linear ? s.d_linear_dX : s.d_quadratic_dX,
-                                s.d_area_dX,
-                                weight,
-                                *d_dX);
-          }
-        return weight * top / s.area - offset;
-      }
-
-    private:
-      const Moment                         moment;
-      const double                         weight;
-      const double                         offset;
-      const CellKernels::DirectionFunction direction;
-    };
-
-    /** w V_c^p: the cavity volume at a target, times a weight. */
-    class CavityVolume : public Functional
-    {
-    public:
-      CavityVolume(const std::string &name, const double load_factor, const double weight)
-        : Functional(name, Kind::objective, load_factor)
-        , weight(weight)
-      {}
-
-      double
-      evaluate(const HyperelasticProblem        &problem,
-               const DesignConfiguration        &design,
-               const PETScWrappers::MPI::Vector &a,
-               PETScWrappers::MPI::Vector       *d_da,
-               PETScWrappers::MPI::Vector       *d_dX) const override
-      {
-        const double V = cavity_volume(problem, design, a, d_da, d_dX);
-        if (d_da != nullptr)
-          {
-            *d_da *= weight;
-            *d_dX *= weight;
-          }
-        return weight * V;
-      }
-
-    private:
-      const double weight;
-    };
 
     void
     declare_objective(ParameterHandler &prm)
@@ -160,40 +95,24 @@ namespace softopt
       prm.declare_entry("Weight",
                         "-1",
                         Patterns::Double(),
-                        "The weight w_i of Eq. g0 (dimensionless; negative "
-                        "to maximize the displacement along the direction "
-                        "field, as in the paper). Objectives are minimized "
-                        "in min-max form: min max_i g_i.");
-      prm.declare_entry("Quantity",
-                        "displacement",
-                        Patterns::Selection("displacement|cavity volume"),
-                        "displacement: g = w / |dOmega^d| int u . v dS over "
-                        "the design surface (Eq. g0, mm); cavity volume: "
-                        "g = w V_c (mm^3).");
-      prm.declare_entry("Load factor",
-                        "1",
-                        Patterns::Double(0),
-                        "The target load factor lambda^i at which the "
-                        "objective is evaluated (pressure = load factor x "
-                        "Pressure).");
-      DirectionFields::declare_parameters(prm, "constant");
+                        "The weight w_i of Eq. g0: g_i = w_i Q (dimensionless; "
+                        "negative to maximize Q, e.g. the displacement along "
+                        "the direction field, as in the paper). Objectives are "
+                        "minimized in min-max form: min max_i g_i.");
+      declare_common(prm, "displacement");
     }
 
     void
     declare_constraint(ParameterHandler &prm)
     {
-      prm.declare_entry("Load factor",
-                        "1",
-                        Patterns::Double(0),
-                        "The target load factor lambda^j at which the "
-                        "constraint is evaluated.");
       prm.declare_entry("Tolerance",
                         "1",
                         Patterns::Double(0),
-                        "epsilon_u of Eq. constraint, in mm^2: the mean of "
-                        "(u . s)^2 over the design surface must stay below "
-                        "it.");
-      DirectionFields::declare_parameters(prm, "constant");
+                        "The bound of the constraint f_j = Q - Tolerance <= 0, "
+                        "in the unit of Q: epsilon_u of Eq. constraint in mm^2 "
+                        "for the squared displacement (its mean over the design "
+                        "surface must stay below it).");
+      declare_common(prm, "squared displacement");
     }
   } // namespace
 
@@ -224,61 +143,42 @@ namespace softopt
 
 
 
-    std::vector<std::unique_ptr<Functional>>
+    std::vector<std::unique_ptr<const Functional>>
     create(ParameterHandler &prm, const InputFile &input)
     {
-      std::vector<std::unique_ptr<Functional>> functionals;
-      const auto load_factor_of = [&](const std::string &section) {
+      std::vector<std::unique_ptr<const Functional>> functionals;
+      const auto quantity = [&](const std::string &section) {
         const double load_factor = prm.get_double("Load factor");
         AssertThrow(load_factor > 0,
                     ExcMessage(input.where(section, "Load factor") +
                                ": must be positive."));
-        return load_factor;
+        return Quantities::create(prm, input, section, load_factor);
       };
       for (const unsigned int n : input.numbered_subsections("Objective"))
         {
           const std::string section = "Objective " + std::to_string(n);
           prm.enter_subsection(section);
-          const double load_factor = load_factor_of(section);
-          const double weight = prm.get_double("Weight");
-          if (prm.get("Quantity") == "cavity volume")
-            functionals.push_back(std::make_unique<CavityVolume>(
-              "g_" + std::to_string(n), load_factor, weight));
-          else
-            functionals.push_back(std::make_unique<SurfaceMean>(
-              "g_" + std::to_string(n),
-              Functional::Kind::objective,
-              load_factor,
-              SurfaceMean::Moment::linear,
-              weight,
-              0.,
-              DirectionFields::create(prm, input, section)));
+          functionals.push_back(std::make_unique<Functional>(
+            "g_" + std::to_string(n),
+            Functional::Kind::objective,
+            quantity(section),
+            prm.get_double("Weight"),
+            0.));
           prm.leave_subsection();
         }
       for (const unsigned int n : input.numbered_subsections("Constraint"))
         {
           const std::string section = "Constraint " + std::to_string(n);
           prm.enter_subsection(section);
-          const double load_factor = load_factor_of(section);
-          functionals.push_back(std::make_unique<SurfaceMean>(
+          functionals.push_back(std::make_unique<Functional>(
             "f_" + std::to_string(n),
             Functional::Kind::constraint,
-            load_factor,
-            SurfaceMean::Moment::quadratic,
+            quantity(section),
             1.,
-            prm.get_double("Tolerance"),
-            DirectionFields::create(prm, input, section)));
+            prm.get_double("Tolerance")));
           prm.leave_subsection();
         }
       return functionals;
-    }
-
-
-
-    std::unique_ptr<Functional>
-    cavity_volume(const double load_factor)
-    {
-      return std::make_unique<CavityVolume>("V", load_factor, 1.);
     }
   } // namespace Functionals
 } // namespace softopt

@@ -298,10 +298,7 @@ namespace softopt
     for (const auto &cell : serial.active_cell_iterators())
       for (const unsigned int f : cell->face_indices())
         if (cell->face(f)->at_boundary() &&
-            std::find(pressure_boundary_ids.begin(),
-                      pressure_boundary_ids.end(),
-                      cell->face(f)->boundary_id()) !=
-              pressure_boundary_ids.end())
+            is_in(pressure_boundary_ids, cell->face(f)->boundary_id()))
           for (unsigned int l = 0; l < cell->face(f)->n_lines(); ++l)
             {
               auto &entry = faces_per_line[cell->face(f)->line(l)->index()];
@@ -338,6 +335,14 @@ namespace softopt
             << "by symmetry planes through the origin (x = 0, y = 0 or "
             << "z = 0 with that displacement component fixed).";
     AssertThrow(open_edges == 0, ExcMessage(message.str()));
+  }
+
+
+
+  bool
+  is_in(const std::vector<types::boundary_id> &ids, const types::boundary_id id)
+  {
+    return std::find(ids.begin(), ids.end(), id) != ids.end();
   }
 
 

@@ -10,6 +10,22 @@
 
 namespace softopt
 {
+  namespace
+  {
+    /** The states at @p load_factors, in their order. */
+    Functional::States
+    states_at(const std::map<double, DesignProblem::Vector> &states,
+              const std::vector<double>                     &load_factors)
+    {
+      Functional::States at;
+      for (const double load_factor : load_factors)
+        at.push_back(&states.at(load_factor));
+      return at;
+    }
+  } // namespace
+
+
+
   DesignProblem::DesignProblem(const ProblemParameters &parameters,
                                const MPI_Comm           comm,
                                const std::string       &mesh_file)
@@ -23,7 +39,7 @@ namespace softopt
       functionals_.push_back(f.get());
     targets = parameters.loading.target_load_factors;
     for (const auto *f : functionals_)
-      targets.push_back(f->load_factor());
+      targets.insert(targets.end(), f->load_factors().begin(), f->load_factors().end());
     std::sort(targets.begin(), targets.end());
     targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
   }
@@ -168,7 +184,7 @@ namespace softopt
     std::vector<double> values;
     for (const auto *f : functionals_)
       values.push_back(
-        f->evaluate(*problem, *design, states.at(f->load_factor()), nullptr, nullptr));
+        f->evaluate(*problem, *design, states_at(states, f->load_factors()), nullptr));
     return values;
   }
 
@@ -177,8 +193,15 @@ namespace softopt
   std::vector<DesignProblem::Vector>
   DesignProblem::gradients(const DesignIterate &x)
   {
-    std::vector<Vector> result(functionals_.size());
-    Vector              r, P, dg_da, dg_dX, mu_a, mu_psi;
+    const unsigned int                   n = functionals_.size();
+    std::vector<Vector>                  result(n);
+    std::vector<Functional::Derivatives> partials(n);
+    // The states of each functional still to be done; at the last, its
+    // dg/dX holds every shape term and the filter adjoint follows.
+    std::vector<unsigned int> remaining(n);
+    for (unsigned int i = 0; i < n; ++i)
+      remaining[i] = functionals_[i]->load_factors().size();
+    Vector r, P, mu_a, mu_psi;
     // The last target first: after a warm start its tangent is assembled.
     for (auto target = x.states.rbegin(); target != x.states.rend(); ++target)
       {
@@ -191,35 +214,46 @@ namespace softopt
         // other targets assemble and factorize.
         const bool assembled  = load_factor == tangent_at;
         bool       factorized = assembled;
-        for (unsigned int i = 0; i < functionals_.size(); ++i)
+        for (unsigned int i = 0; i < n; ++i)
           {
-            if (functionals_[i]->load_factor() != load_factor)
-              continue;
-            if (!factorized)
+            const auto &load_factors = functionals_[i]->load_factors();
+            for (unsigned int j = 0; j < load_factors.size(); ++j)
               {
-                TimerOutput::Scope scope(timer_output, "adjoint: tangent");
-                problem->assemble(a, load_factor, r, P, true);
-                problem->factorize();
-                factorized = true;
-                tangent_at = -1;
+                if (load_factors[j] != load_factor)
+                  continue;
+                if (!factorized)
+                  {
+                    TimerOutput::Scope scope(timer_output, "adjoint: tangent");
+                    problem->assemble(a, load_factor, r, P, true);
+                    problem->factorize();
+                    factorized = true;
+                    tangent_at = -1;
+                  }
+                {
+                  TimerOutput::Scope scope(timer_output, "adjoint: solve");
+                  if (partials[i].d_da.empty()) // dg/da^j and dg/dX
+                    functionals_[i]->evaluate(*problem,
+                                              *design,
+                                              states_at(x.states, load_factors),
+                                              &partials[i]);
+                  if (assembled)
+                    problem->solve_kept(partials[i].d_da[j], mu_a);
+                  else
+                    problem->solve(partials[i].d_da[j], mu_a);
+                }
+                // Eq. adj3: (dr_psi/dpsi)^T mu_psi = dg/dpsi - (dr_a/dpsi)^T mu_a
+                TimerOutput::Scope scope(timer_output, "adjoint: shape derivatives");
+                partials[i].d_dX -=
+                  residual_shape_derivative(*problem, *design, a, load_factor, mu_a);
+                --remaining[i];
               }
-            {
-              TimerOutput::Scope scope(timer_output, "adjoint: solve");
-              functionals_[i]->evaluate(*problem, *design, a, &dg_da, &dg_dX);
-              if (assembled)
-                problem->solve_kept(dg_da, mu_a);
-              else
-                problem->solve(dg_da, mu_a);
-            }
-            // Eq. adj3: (dr_psi/dpsi)^T mu_psi = dg/dpsi - (dr_a/dpsi)^T mu_a
-            {
-              TimerOutput::Scope scope(timer_output, "adjoint: shape derivatives");
-              dg_dX -= residual_shape_derivative(*problem, *design, a, load_factor, mu_a);
-            }
-            TimerOutput::Scope scope(timer_output, "adjoint: filter");
-            filter.solve_adjoint(dg_dX, mu_psi);
-            // Eq. sens06: dg/dd = -mu_psi^T dr_psi/dd
-            result[i] = filter.design_gradient(mu_psi);
+            if (remaining[i] == 0 && result[i].size() == 0)
+              {
+                TimerOutput::Scope scope(timer_output, "adjoint: filter");
+                filter.solve_adjoint(partials[i].d_dX, mu_psi);
+                // Eq. sens06: dg/dd = -mu_psi^T dr_psi/dd
+                result[i] = filter.design_gradient(mu_psi);
+              }
           }
       }
     return result;

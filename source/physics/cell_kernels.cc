@@ -1,8 +1,8 @@
-#include <deal.II/differentiation/ad.h>
 #include <deal.II/fe/fe_simplex_p.h>
 #include <deal.II/grid/reference_cell.h>
 
 #include <softopt/physics/cell_kernels.h>
+#include <softopt/physics/nodal_ad.h>
 
 namespace softopt
 {
@@ -53,74 +53,7 @@ namespace softopt
   {
     namespace
     {
-      using AD = Sacado::Fad::DFad<double>;
-
-      template <typename Number>
-      using Nodes = std::array<Tensor<1, 3, Number>, 10>;
-
-      /** Nodal values as AD numbers, each component an independent
-       * variable (3 a + c). */
-      Nodes<AD>
-      independent(const NodalVectors &values)
-      {
-        Nodes<AD> nodes;
-        for (unsigned int a = 0; a < 10; ++a)
-          for (unsigned int c = 0; c < 3; ++c)
-            nodes[a][c] = AD(30, 3 * a + c, values[a][c]);
-        return nodes;
-      }
-
-      /** d(value)/d(independent 3 a + c) as nodal vectors. */
-      NodalVectors
-      derivatives(const AD &value)
-      {
-        NodalVectors d;
-        for (unsigned int a = 0; a < 10; ++a)
-          for (unsigned int c = 0; c < 3; ++c)
-            d[a][c] = value.size() > 0 ? value.dx(3 * a + c) : 0.;
-        return d;
-      }
-
-      /** dX/dxi at a quadrature point. */
-      template <typename Number>
-      Tensor<2, 3, Number>
-      jacobian(const ReferenceTetrahedron::QuadraturePoint &point,
-               const Nodes<Number>                         &X)
-      {
-        Tensor<2, 3, Number> J;
-        for (unsigned int a = 0; a < 10; ++a)
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              J[i][j] += X[a][i] * point.gradients[a][j];
-        return J;
-      }
-
-      /** sum_a N_a y_a at a quadrature point. */
-      template <typename Number>
-      Tensor<1, 3, Number>
-      interpolate(const ReferenceTetrahedron::QuadraturePoint &point,
-                  const Nodes<Number>                         &y)
-      {
-        Tensor<1, 3, Number> value;
-        for (unsigned int a = 0; a < 10; ++a)
-          for (unsigned int i = 0; i < 3; ++i)
-            value[i] += point.values[a] * y[a][i];
-        return value;
-      }
-
-      /** n^ = x_{,s} x x_{,t} on face f (Eq. normal without normalization). */
-      template <typename Number>
-      Tensor<1, 3, Number>
-      area_normal(const ReferenceTetrahedron                  &reference,
-                  const unsigned int                           face,
-                  const ReferenceTetrahedron::QuadraturePoint &point,
-                  const Nodes<Number>                         &x)
-      {
-        const Tensor<2, 3, Number> J  = jacobian(point, x);
-        const Tensor<1, 3, Number> xs = J * reference.face_tangents[face][0];
-        const Tensor<1, 3, Number> xt = J * reference.face_tangents[face][1];
-        return cross_product_3d(xs, xt);
-      }
+      using namespace NodalAD;
 
       /** What the condensed residual of a cell and its shape derivative
        * share, at each quadrature point: grad N, H = grad u and dV in the
@@ -198,61 +131,6 @@ namespace softopt
             V -= xn * point.weight / 3.;
           }
         return V;
-      }
-
-      double
-      value_of(const AD &x)
-      {
-        return x.val();
-      }
-
-      template <typename Number>
-      std::array<Number, 3>
-      moments(const ReferenceTetrahedron &reference,
-              const unsigned int          face,
-              const NodalVectors         &u,
-              const Nodes<Number>        &X,
-              const DirectionFunction    &v,
-              NodalVectors               *d_linear_du,
-              NodalVectors               *d_quadratic_du)
-      {
-        std::array<Number, 3> m{{0., 0., 0.}};
-        for (const auto &point : reference.face_points[face])
-          {
-            using std::sqrt;
-            const Tensor<1, 3, Number> n  = area_normal(reference, face, point, X);
-            const Number               dS = sqrt(n * n) * point.weight;
-            const Tensor<1, 3, Number> Xq = interpolate(point, X);
-            Point<3>                   X_value;
-            for (unsigned int i = 0; i < 3; ++i)
-              X_value[i] = value_of(Xq[i]);
-            // v(X) to first order about X_value carries the exact first
-            // derivative: the problem-specific dv/dpsi of Eq. g0sens.
-            const Tensor<1, 3>   v0 = v.value(X_value);
-            const Tensor<2, 3>   G  = v.gradient(X_value);
-            Tensor<1, 3, Number> v_q;
-            for (unsigned int i = 0; i < 3; ++i)
-              {
-                v_q[i] = v0[i];
-                for (unsigned int j = 0; j < 3; ++j)
-                  v_q[i] += G[i][j] * (Xq[j] - X_value[j]);
-              }
-            Tensor<1, 3> u_q;
-            for (unsigned int a = 0; a < 10; ++a)
-              u_q += point.values[a] * u[a];
-            const Number s = u_q * v_q;
-            m[0] += dS;
-            m[1] += s * dS;
-            m[2] += s * s * dS;
-            if (d_linear_du != nullptr)
-              for (unsigned int a = 0; a < 10; ++a)
-                {
-                  const double w = point.values[a] * value_of(dS);
-                  (*d_linear_du)[a] += w * v0;
-                  (*d_quadratic_du)[a] += 2. * value_of(s) * w * v0;
-                }
-          }
-        return m;
       }
 
       /** mu . v over the ten nodes of a cell: the adjoint-weighted sum
@@ -388,32 +266,6 @@ namespace softopt
       const AD V = volume(reference, face, independent(x));
       *d_dx      = derivatives(V);
       return V.val();
-    }
-
-
-
-    FaceMoments
-    face_moments(const ReferenceTetrahedron &reference,
-                 const unsigned int          face,
-                 const NodalVectors         &u,
-                 const NodalVectors         &X,
-                 const DirectionFunction    &v)
-    {
-      FaceMoments result;
-      const auto  m = moments(reference,
-                             face,
-                             u,
-                             independent(X),
-                             v,
-                             &result.d_linear_du,
-                             &result.d_quadratic_du);
-      result.area           = m[0].val();
-      result.linear         = m[1].val();
-      result.quadratic      = m[2].val();
-      result.d_area_dX      = derivatives(m[0]);
-      result.d_linear_dX    = derivatives(m[1]);
-      result.d_quadratic_dX = derivatives(m[2]);
-      return result;
     }
   } // namespace CellKernels
 } // namespace softopt

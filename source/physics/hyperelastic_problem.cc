@@ -22,12 +22,6 @@ namespace softopt
   namespace
   {
     constexpr unsigned int pressure_component = 3;
-
-    bool
-    is_in(const std::vector<types::boundary_id> &ids, const types::boundary_id id)
-    {
-      return std::find(ids.begin(), ids.end(), id) != ids.end();
-    }
   } // namespace
 
 

@@ -71,6 +71,19 @@ namespace softopt
 
 
 
+  NodalVectors
+  CellNodes::deformed(const PETScWrappers::MPI::Vector &a,
+                      const PETScWrappers::MPI::Vector &X) const
+  {
+    NodalVectors       x = design(X);
+    const NodalVectors u = displacement(a);
+    for (unsigned int n = 0; n < 10; ++n)
+      x[n] += u[n];
+    return x;
+  }
+
+
+
   void
   CellNodes::add_to_displacement(const NodalVectors         &values,
                                  PETScWrappers::MPI::Vector &v) const
@@ -85,6 +98,14 @@ namespace softopt
                            PETScWrappers::MPI::Vector &v) const
   {
     scatter_add(X_dofs, values, v);
+  }
+
+
+
+  const std::array<types::global_dof_index, 3> &
+  CellNodes::design_dofs(const unsigned int node) const
+  {
+    return X_dofs[node];
   }
 
 

@@ -156,9 +156,7 @@ namespace softopt
     for (const auto &cell : dofs.active_cell_iterators())
       if (!cell->is_artificial())
         for (const unsigned int f : cell->face_indices())
-          if (cell->face(f)->at_boundary() &&
-              std::find(fixed.begin(), fixed.end(), cell->face(f)->boundary_id()) !=
-                fixed.end())
+          if (cell->face(f)->at_boundary() && is_in(fixed, cell->face(f)->boundary_id()))
             {
               cell->face(f)->get_dof_indices(face_dofs);
               for (const auto i : face_dofs)

@@ -1,7 +1,7 @@
 #ifndef softopt_functionals_design_surface_h
 #define softopt_functionals_design_surface_h
 
-#include <softopt/physics/cell_kernels.h>
+#include <softopt/functionals/direction_field.h>
 #include <softopt/physics/hyperelastic_problem.h>
 #include <softopt/shape/design_configuration.h>
 
@@ -23,11 +23,11 @@ namespace softopt
   };
 
   DesignSurfaceIntegrals
-  integrate_over_design_surface(const HyperelasticProblem               &problem,
-                                const DesignConfiguration               &design,
-                                const PETScWrappers::MPI::Vector        &a,
-                                const CellKernels::DirectionFunction    &v,
-                                const bool                               derivatives);
+  integrate_over_design_surface(const HyperelasticProblem        &problem,
+                                const DesignConfiguration        &design,
+                                const PETScWrappers::MPI::Vector &a,
+                                const DirectionField             &v,
+                                const bool                        derivatives);
 
   /**
    * The cavity volume V_c^p = -1/3 int x . n_c da over the pressure boundary

@@ -66,6 +66,11 @@ namespace softopt
     create(ParameterHandler  &prm,
            const InputFile   &input,
            const std::string &subsection);
+
+    /** The registered field @p name with its entries at their defaults
+     * (constant: (1, 0, 0); inward radial: about the x axis). */
+    std::unique_ptr<DirectionField>
+    create_default(const std::string &name);
   } // namespace DirectionFields
 } // namespace softopt
 

@@ -4,8 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <softopt/base/input.h>
-#include <softopt/physics/hyperelastic_problem.h>
-#include <softopt/shape/design_configuration.h>
+#include <softopt/functionals/quantity.h>
 
 #include <memory>
 #include <string>
@@ -14,24 +13,29 @@
 namespace softopt
 {
   /**
-   * A function of the equilibrium state at one target load factor: an
-   * objective g_i (Eq. g0), a constraint f_j <= 0 (Eq. constraint), or the
-   * cavity volume. It gives its value and its partial derivatives in the
-   * state a and in the design positions X, from which the adjoint method
-   * makes dg/dd.
+   * An objective g_i = w Q (Eq. g0, the weight w of "Objective N") or a
+   * constraint f_j = Q - tolerance <= 0 (Eq. constraint, the "Tolerance" of
+   * "Constraint N") of a registered Quantity Q.
    */
   class Functional
   {
   public:
+    using Vector      = Quantity::Vector;
+    using States      = Quantity::States;
+    using Derivatives = Quantity::Derivatives;
+
     enum class Kind
     {
       objective,
       constraint
     };
 
-    Functional(const std::string &name, const Kind kind, const double load_factor);
-
-    virtual ~Functional() = default;
+    /** @p scale Q - @p offset. */
+    Functional(const std::string               &name,
+               const Kind                       kind,
+               std::unique_ptr<const Quantity>  quantity,
+               const double                     scale,
+               const double                     offset);
 
     /** "g_1", "f_2", "V": the column name in history.csv. */
     const std::string &
@@ -40,26 +44,30 @@ namespace softopt
     Kind
     kind() const;
 
-    /** The target load factor lambda^i of the state it is evaluated at. */
-    double
-    load_factor() const;
+    /** The target load factors whose states it reads (Quantity). */
+    const std::vector<double> &
+    load_factors() const;
 
-    /**
-     * The value at the state @p a of @p problem on @p design; with non-null
-     * @p d_da and @p d_dX also the partial derivatives, on the hyperelastic
-     * and the design DoFs.
-     */
-    virtual double
-    evaluate(const HyperelasticProblem        &problem,
-             const DesignConfiguration        &design,
-             const PETScWrappers::MPI::Vector &a,
-             PETScWrappers::MPI::Vector       *d_da,
-             PETScWrappers::MPI::Vector       *d_dX) const = 0;
+    /** The value at @p states (at load_factors()), with a non-null
+     * @p derivatives also its partial derivatives (Quantity::value()). */
+    double
+    evaluate(const HyperelasticProblem &problem,
+             const DesignConfiguration &design,
+             const States              &states,
+             Derivatives               *derivatives) const;
+
+    /** The value along a load path: every state it reads is @p a. */
+    double
+    evaluate_at(const HyperelasticProblem &problem,
+                const DesignConfiguration &design,
+                const Vector              &a) const;
 
   private:
-    std::string name_;
-    Kind        kind_;
-    double      load_factor_;
+    std::string                     name_;
+    Kind                            kind_;
+    std::unique_ptr<const Quantity> quantity;
+    double                          scale;
+    double                          offset;
   };
 
   namespace Functionals
@@ -73,7 +81,7 @@ namespace softopt
     declare_parameters(ParameterHandler &prm, const InputFile *input);
 
     /** The objectives and constraints of the file, in order. */
-    std::vector<std::unique_ptr<Functional>>
+    std::vector<std::unique_ptr<const Functional>>
     create(ParameterHandler &prm, const InputFile &input);
 
     /** The cavity volume at @p load_factor as a functional (named "V"). */

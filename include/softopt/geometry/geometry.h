@@ -88,6 +88,10 @@ namespace softopt
     std::string where_dirichlet, where_pressure, where_design, where_mesh;
   };
 
+  /** Whether the boundary id @p id is one of @p ids. */
+  bool
+  is_in(const std::vector<types::boundary_id> &ids, const types::boundary_id id);
+
   /**
    * The initial design coordinates X_o at the DoFs of a P2 vector field on
    * a triangulation made by Geometry::create_triangulation(): vertices, and

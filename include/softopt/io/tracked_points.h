@@ -7,6 +7,7 @@
 #include <softopt/base/input.h>
 #include <softopt/physics/hyperelastic_problem.h>
 #include <softopt/shape/design_configuration.h>
+#include <softopt/shape/surface_nodes.h>
 
 #include <array>
 #include <string>
@@ -38,14 +39,12 @@ namespace softopt
                   const std::vector<NamedPoint> &requested);
 
     /** A requested point and the surface node chosen for it (mm). */
-    struct SurfaceNode
+    struct TrackedNode
     {
       std::string name;
       Point<3>    requested;
-      Point<3>    position;
-      double      distance;
-      /** The longest edge of the boundary face the node was found on. */
-      double face_size;
+      /** The node, at X, with its distance, face size and DoFs. */
+      SurfaceNode node;
 
       /** Whether the node is so far from the requested point that the point
        * is probably not on the surface: farther than half the longest edge
@@ -71,7 +70,7 @@ namespace softopt
     csv_entries(const HyperelasticProblem::Vector &a) const;
 
   private:
-    std::vector<SurfaceNode> nodes;
+    std::vector<TrackedNode> nodes;
 
     /** Per point, the node's three displacement DoFs (on every rank). */
     std::vector<std::array<types::global_dof_index, 3>> dofs;

@@ -50,8 +50,9 @@ namespace softopt
    * functions ending in _shape_derivative differentiate with respect to the
    * nodal positions: the condensed residual's by hand (it runs on every
    * cell; tests/cell_kernels checks it against finite differences), the
-   * face kernels by forward automatic differentiation (Sacado) of the same
-   * code that gives their values.
+   * face kernels by forward automatic differentiation (NodalAD) of the same
+   * code that gives their values. The integrands of functionals live with
+   * them (softopt/functionals/).
    */
   namespace CellKernels
   {
@@ -102,32 +103,6 @@ namespace softopt
                   const unsigned int          face,
                   const NodalVectors         &x,
                   NodalVectors               *d_dx);
-
-    /** A direction field v(X) with its gradient dv/dX. */
-    struct DirectionFunction
-    {
-      std::function<Tensor<1, 3>(const Point<3> &)> value;
-      std::function<Tensor<2, 3>(const Point<3> &)> gradient;
-    };
-
-    /**
-     * On face f in the configuration X: the area int dS, int u . v dS and
-     * int (u . v)^2 dS (the integrals of Eqs. g0 and constraint), with their
-     * derivatives in u and X (the latter by AD, through dS and v(X)).
-     */
-    struct FaceMoments
-    {
-      double       area = 0, linear = 0, quadratic = 0;
-      NodalVectors d_area_dX{}, d_linear_dX{}, d_quadratic_dX{};
-      NodalVectors d_linear_du{}, d_quadratic_du{};
-    };
-
-    FaceMoments
-    face_moments(const ReferenceTetrahedron &reference,
-                 const unsigned int          face,
-                 const NodalVectors         &u,
-                 const NodalVectors         &X,
-                 const DirectionFunction    &v);
   } // namespace CellKernels
 } // namespace softopt
 

@@ -31,6 +31,11 @@ namespace softopt
     NodalVectors
     design(const PETScWrappers::MPI::Vector &X) const;
 
+    /** The deformed positions x = X + u of the nodes, from (ghosted)
+     * vectors on the displacement DoFs (@p a) and design DoFs (@p X). */
+    NodalVectors
+    deformed(const PETScWrappers::MPI::Vector &a, const PETScWrappers::MPI::Vector &X) const;
+
     /** Adds nodal values to a vector on the displacement DoFs
      * (compress(add) afterwards). */
     void
@@ -44,6 +49,10 @@ namespace softopt
     /** The three displacement DoFs of node @p node. */
     const std::array<types::global_dof_index, 3> &
     displacement_dofs(const unsigned int node) const;
+
+    /** The three design DoFs of node @p node. */
+    const std::array<types::global_dof_index, 3> &
+    design_dofs(const unsigned int node) const;
 
     /** The cell on the displacement DoFHandler. */
     const DoFHandler<3>::active_cell_iterator &
