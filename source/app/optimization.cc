@@ -10,7 +10,6 @@
 #include <softopt/optimization/checkpoint.h>
 #include <softopt/optimization/shape_optimizer.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -107,11 +106,8 @@ namespace softopt
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       std::filesystem::create_directories(final_directory);
     MPI_Barrier(comm);
-    // The design's targets and equal steps (the path sorts out repeats).
-    std::vector<double> targets = problem.target_load_factors();
-    const unsigned int  n       = settings.optimization.final_analysis_steps;
-    for (unsigned int i = 1; i <= n; ++i)
-      targets.push_back(double(i) / n);
+    // The design's targets and equal steps, as the loop's check from rest.
+    const std::vector<double> targets = problem.load_path_from_rest();
     const auto result = follow_load_path(problem.hyperelastic_problem(),
                                          problem.design_configuration(),
                                          settings,

@@ -142,19 +142,29 @@ namespace softopt
 
   namespace
   {
-    /** Removes the temporary meshes softopt-<pid>-* of runs that no longer
-     * exist (killed before they could remove them). */
+    /** "softopt-<host>-": the prefix of this machine's temporary meshes
+     * (a temporary folder may be shared by the nodes of a cluster). */
+    std::string
+    temporary_prefix()
+    {
+      char host[256] = {};
+      ::gethostname(host, sizeof(host) - 1);
+      return "softopt-" + std::string(host) + "-";
+    }
+
+    /** Removes the temporary meshes softopt-<host>-<pid>-* of this
+     * machine's runs that no longer exist (killed before they could). */
     void
     remove_stale_temporary_meshes(const std::filesystem::path &folder)
     {
-      std::error_code error;
+      const std::string prefix = temporary_prefix();
+      std::error_code   error;
       for (const auto &entry : std::filesystem::directory_iterator(folder, error))
         {
           const std::string name = entry.path().filename().string();
-          if (name.rfind("softopt-", 0) != 0)
+          if (name.rfind(prefix, 0) != 0)
             continue;
-          const auto  end = name.find('-', 8);
-          const pid_t pid = std::atoi(name.substr(8, end - 8).c_str());
+          const pid_t pid = std::atoi(name.c_str() + prefix.size());
           if (pid > 0 && ::kill(pid, 0) != 0 && errno == ESRCH)
             std::filesystem::remove(entry.path(), error);
         }
@@ -176,7 +186,7 @@ namespace softopt
       {
         remove_stale_temporary_meshes(std::filesystem::temp_directory_path());
         const auto tmp = std::filesystem::temp_directory_path() /
-                         ("softopt-" + std::to_string(::getpid()) + "-" +
+                         (temporary_prefix() + std::to_string(::getpid()) + "-" +
                           std::filesystem::path(mesh_file).stem().string());
         msh_file      = tmp.string() + ".msh";
         const bool geo = std::filesystem::path(mesh_file).extension() == ".geo";
@@ -267,8 +277,7 @@ namespace softopt
       std::string list;
       for (const auto b : present)
         list += (list.empty() ? "" : ", ") + std::to_string(b);
-      AssertThrow(std::find(present.begin(), present.end(), id) !=
-                    present.end(),
+      AssertThrow(is_in(present, id),
                   ExcMessage(where + ": the mesh has no boundary with id " +
                              std::to_string(id) + " (it has " + list + ")."));
     };

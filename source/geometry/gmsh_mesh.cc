@@ -6,6 +6,7 @@
 #include <softopt/geometry/gmsh_mesh.h>
 
 #include <algorithm>
+#include <cctype>
 #include <array>
 #include <cstdlib>
 #include <iterator>
@@ -250,8 +251,11 @@ namespace softopt
     std::filesystem::remove(log);
     if (status == 0 && std::ifstream(output).good())
       return "";
-    if (status == 127 && log_text.str().empty())
-      log_text << "gmsh could not be started (apt-get install gmsh)\n";
+    if (status == not_found)
+      log_text << "gmsh is not in PATH (apt-get install gmsh)\n";
+    else if (status == cannot_start)
+      log_text << "gmsh could not be started, or its log <" << log
+               << "> not written\n";
     return "(command: " + command_line(arguments) + "):\n" + log_text.str();
   }
 
@@ -272,7 +276,12 @@ namespace softopt
       else if (text.compare(i, 2, "/*") == 0)
         i = std::min(text.find("*/", i + 2), text.size() - 2) + 1;
       else if (text[i] == '"')
-        i = std::min(text.find('"', i + 1), text.size());
+        {
+          // Past the closing quote (a \" inside does not close).
+          for (++i; i < text.size() && text[i] != '"'; ++i)
+            if (text[i] == '\\')
+              ++i;
+        }
       else
         code += text[i];
 
@@ -282,6 +291,8 @@ namespace softopt
     for (auto at = code.find(keyword); at != std::string::npos;
          at      = code.find(keyword, at + 1))
       {
+        if (at > 0 && (std::isalnum(code[at - 1]) || code[at - 1] == '_'))
+          continue; // part of another name
         std::size_t i = code.find('[', at + keyword.size());
         if (i == std::string::npos)
           break;

@@ -15,10 +15,9 @@ namespace softopt
     namespace
     {
       constexpr std::uint64_t magic = 0x736f66746f707433; // "softopt3"
-      // Before the accepted design was part of it (read without: the
-      // first resumed iteration halves towards zero, as it did then).
+      // Older checkpoints were written after the iteration's mesh update
+      // and without the accepted design: a run cannot go on from them.
       constexpr std::uint64_t magic_2 = 0x736f66746f707432; // "softopt2"
-      // Before the warm start's secant was part of it (read without).
       constexpr std::uint64_t magic_1 = 0x736f66746f707431; // "softopt1"
 
       /** The checkpoint to read: "checkpoint", or "checkpoint.old" if a
@@ -208,7 +207,11 @@ namespace softopt
                              "interval\" iterations of subsection Optimization "
                              "into the output directory)."));
       const auto file_magic = read_value<std::uint64_t>(in);
-      AssertThrow(file_magic == magic || file_magic == magic_2 || file_magic == magic_1,
+      AssertThrow(file_magic != magic_2 && file_magic != magic_1,
+                  ExcMessage("--restart: " + file + " was written by an older "
+                             "softopt, which this one cannot continue; start "
+                             "the run afresh (without --restart)."));
+      AssertThrow(file_magic == magic,
                   ExcMessage(file + " is not a softopt checkpoint."));
       const auto n_ranks = read_value<std::uint32_t>(in);
       AssertThrow(n_ranks == Utilities::MPI::n_mpi_processes(comm),
@@ -219,28 +222,23 @@ namespace softopt
       const auto iteration = read_value<std::uint32_t>(in);
       x.mesh_file          = mesh_file(output_directory);
       read_vector(in, x.d, file);
-      x.accepted = 0;
-      if (file_magic == magic)
-        read_vector(in, x.accepted, file);
+      read_vector(in, x.accepted, file);
       read_vector(in, x.X_o, file);
       read_vector(in, x.psi, file);
       x.mma->load(in);
       x.states = read_states(in, state_template, file);
       Vector                  X_last;
       SecantPredictor::Design previous;
-      if (file_magic != magic_1) // the oldest checkpoints have no secant
+      if (read_value<std::uint8_t>(in) && in)
         {
-          if (read_value<std::uint8_t>(in) && in)
-            {
-              X_last = x.X_o;
-              read_vector(in, X_last, file);
-            }
-          if (read_value<std::uint8_t>(in) && in)
-            {
-              previous.X = x.X_o;
-              read_vector(in, previous.X, file);
-              previous.states = read_states(in, state_template, file);
-            }
+          X_last = x.X_o;
+          read_vector(in, X_last, file);
+        }
+      if (read_value<std::uint8_t>(in) && in)
+        {
+          previous.X = x.X_o;
+          read_vector(in, previous.X, file);
+          previous.states = read_states(in, state_template, file);
         }
       x.secant.restore(X_last, previous);
       AssertThrow(in, ExcMessage("The checkpoint " + file + " is truncated."));

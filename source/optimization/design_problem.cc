@@ -190,6 +190,67 @@ namespace softopt
 
 
 
+  std::vector<double>
+  DesignProblem::load_path_from_rest() const
+  {
+    std::vector<double> path = targets;
+    const unsigned int  n    = parameters.optimization.final_analysis_steps;
+    for (unsigned int i = 1; i <= n; ++i)
+      path.push_back(double(i) / n);
+    return path; // PathFollowing sorts and merges repeats
+  }
+
+
+
+  DesignProblem::BranchCheck
+  DesignProblem::check_branch(DesignIterate       &x,
+                              std::vector<double> &values,
+                              const double         tolerance)
+  {
+    TimerOutput::Scope scope(timer_output, "path from rest");
+    BranchCheck        check;
+    ConditionalOStream quiet(std::cout, false);
+    const auto         result = parameters.loading.path.run(
+      *problem,
+      parameters.newton,
+      load_path_from_rest(),
+      [](const PathFollowing::PathPoint &, const Vector &) { return std::string(); },
+      quiet);
+    std::map<double, Vector> from_rest;
+    for (unsigned int i = 0; i < result.target_states.size(); ++i)
+      if (std::find(targets.begin(), targets.end(), result.target_load_factors[i]) !=
+          targets.end())
+        from_rest.emplace(result.target_load_factors[i], result.target_states[i]);
+    tangent_at = -1; // the path assembled other states
+    if (from_rest.size() != targets.size())
+      {
+        check.failure = result.stop_reason;
+        return check;
+      }
+
+    std::vector<double> rest_values;
+    for (unsigned int i = 0; i < functionals_.size(); ++i)
+      {
+        const auto &f = *functionals_[i];
+        rest_values.push_back(
+          f.evaluate(*problem, *design, states_at(from_rest, f.load_factors()), nullptr));
+        check.difference =
+          std::max(check.difference,
+                   std::abs(values[i] - rest_values[i]) /
+                     std::max(std::abs(rest_values[i]), 1e-12));
+      }
+    if (check.difference > tolerance)
+      {
+        check.switched = true;
+        x.states       = std::move(from_rest);
+        values         = std::move(rest_values);
+        x.secant.restore(x.secant.last_positions(), SecantPredictor::Design());
+      }
+    return check;
+  }
+
+
+
   std::vector<DesignProblem::Vector>
   DesignProblem::gradients(const DesignIterate &x)
   {
@@ -313,13 +374,9 @@ namespace softopt
   void
   DesignProblem::restore(const DesignIterate &x)
   {
-    if (x.mesh_file != mesh_file)
-      {
-        earlier_meshes_statistics += problem->get_statistics();
-        problem.reset();
-        design.reset();
-        build(x.mesh_file);
-      }
+    Assert(x.mesh_file == mesh_file,
+           ExcMessage("An iterate is restored on its own mesh: build the "
+                      "DesignProblem on the checkpoint's mesh file."));
     design->set_configuration(x.X_o, x.psi);
     filter.setup(*design, parameters.geometry);
     tangent_at = -1;

@@ -78,6 +78,27 @@ namespace softopt
                       "halved and the design evaluated again, at most this "
                       "many times before the run stops with the last accepted "
                       "design (0: stop at once).");
+    prm.declare_entry("Path from rest interval",
+                      "10",
+                      Patterns::Integer(0),
+                      "Warm-started states can drift onto an equilibrium "
+                      "branch that inflating the design from rest does not "
+                      "reach. Every this many iterations, and at every mesh "
+                      "update, the design is also loaded from rest along the "
+                      "final analysis' path (the targets and Final analysis "
+                      "steps equal steps); if a functional differs by more "
+                      "than Branch tolerance, the run goes on from the states "
+                      "reached from rest, says so on the iteration line and "
+                      "marks it in history.csv (branch_switched). 0: never "
+                      "(the loop may then report a state the cast part is "
+                      "not in; see doc/theory.md).");
+    prm.declare_entry("Branch tolerance",
+                      "1e-3",
+                      Patterns::Double(0),
+                      "The largest relative difference |g_warm - g_rest| / "
+                      "|g_rest| of a functional between the warm-started "
+                      "states and those from rest that counts as the same "
+                      "branch (dimensionless).");
     prm.declare_entry("Final analysis steps",
                       "20",
                       Patterns::Integer(1, 10000),
@@ -102,6 +123,8 @@ namespace softopt
     output_interval      = prm.get_integer("Output interval");
     checkpoint_interval  = prm.get_integer("Checkpoint interval");
     final_analysis_steps = prm.get_integer("Final analysis steps");
+    from_rest_interval   = prm.get_integer("Path from rest interval");
+    branch_tolerance     = prm.get_double("Branch tolerance");
     warm_start           = prm.get_bool("Warm start");
     secant_predictor     = prm.get("Warm start predictor") == "secant";
     step_halvings        = prm.get_integer("Step halvings");

@@ -21,9 +21,8 @@ namespace softopt
     , comm(problem.get_communicator())
     , pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0)
   {
-    const auto &functionals = problem.functionals();
-    Assert(!functionals.empty() &&
-             functionals.front()->kind() == Functional::Kind::objective,
+    Assert(!problem.functionals().empty() &&
+             problem.functionals().front()->kind() == Functional::Kind::objective,
            ExcMessage("The design loop needs an objective first."));
   }
 
@@ -45,34 +44,37 @@ namespace softopt
         for (const auto *c : {"max_design_change_mm", "wall_time_s",
                               "newton_iterations", "filter_iterations",
                               "min_J_psi", "worst_quality", "worst_element_x_mm",
-                              "worst_element_y_mm", "worst_element_z_mm"})
+                              "worst_element_y_mm", "worst_element_z_mm",
+                              "from_rest_difference", "branch_switched"})
           columns.emplace_back(c);
         history = std::make_unique<CsvWriter>(out.file("history.csv"), columns, comm);
       }
 
     for (; k < opt.maximum_iterations; ++k)
       {
-        auto before_update = k > first && opt.every(k, opt.mesh_update_interval) ?
-                               update_mesh(k, x) : // X_o <- X_o + psi(d), d <- 0
-                               std::nullopt;
+        // The state at the top of the iteration; a restart from it makes
+        // the iteration's mesh update as the uninterrupted run does.
         if (k > first && opt.every(k, opt.checkpoint_interval))
           Checkpoint::save(out.path(), k, x);
+        auto before_update = opt.every(k, opt.mesh_update_interval) ?
+                               update_mesh(k, x) : // X_o <- X_o + psi(d), d <- 0
+                               std::nullopt;
 
         Timer               timer;
         std::vector<double> values; // psi(d), X, path to every target
-        const std::string   refused =
-          evaluate_or_halve(k, k > first, before_update, x, values);
+        const std::string   refused = evaluate_or_halve(k, before_update, x, values);
         if (!refused.empty())
           {
             stopped_on_error = true;
             return refused;
           }
+        const auto branch = check_branch(k, first, x, values); // states from rest?
         const auto gradients = problem.gradients(x); // adjoints, Eqs. sens01-06
         x.accepted           = x.d;
         if ((k == 0 && opt.output_interval > 0) || opt.every(k, opt.output_interval))
           write_snapshot(k, x);
         const double change = mma_step(x, values, gradients);
-        record(k, values, change, timer.wall_time());
+        record(k, values, branch, change, timer.wall_time());
       }
     // The final design, unless just written.
     const bool written = opt.output_interval > 0 &&
@@ -145,7 +147,6 @@ namespace softopt
 
   std::string
   ShapeOptimizer::evaluate_or_halve(const unsigned int            k,
-                                    const bool                    may_halve,
                                     std::optional<DesignIterate> &before_update,
                                     DesignIterate                &x,
                                     std::vector<double>          &values)
@@ -172,9 +173,9 @@ namespace softopt
             }
           Vector step = x.d;
           step -= x.accepted;
-          // After a new mesh d = accepted = 0: nothing to halve.
-          if (!may_halve || halving == parameters.step_halvings ||
-              step.linfty_norm() == 0)
+          // At the first iteration and after a new mesh d = accepted = 0:
+          // nothing to halve.
+          if (halving == parameters.step_halvings || step.linfty_norm() == 0)
             return "the design of iteration " + std::to_string(k) +
                    " was refused: " + reason +
                    " The last accepted design is that of iteration " +
@@ -186,6 +187,25 @@ namespace softopt
           pcout << "  iteration " << k << ": design refused (" << reason
                 << "); step halved" << std::endl;
         }
+  }
+
+
+
+  std::optional<DesignProblem::BranchCheck>
+  ShapeOptimizer::check_branch(const unsigned int   k,
+                               const unsigned int   first,
+                               DesignIterate       &x,
+                               std::vector<double> &values)
+  {
+    // A path from zero needs no check; after a warm start, check every
+    // "Path from rest interval" iterations, at every mesh update, and at
+    // the first iteration of a restart.
+    const auto &opt = parameters;
+    if (!problem.path_report().warm_started || opt.from_rest_interval == 0 ||
+        !(k == first || opt.every(k, opt.from_rest_interval) ||
+          opt.every(k, opt.mesh_update_interval)))
+      return std::nullopt;
+    return problem.check_branch(x, values, opt.branch_tolerance);
   }
 
 
@@ -279,10 +299,11 @@ namespace softopt
 
 
   void
-  ShapeOptimizer::record(const unsigned int         iteration,
-                         const std::vector<double> &values,
-                         const double               change,
-                         const double               wall_time)
+  ShapeOptimizer::record(const unsigned int                               iteration,
+                         const std::vector<double>                       &values,
+                         const std::optional<DesignProblem::BranchCheck> &branch,
+                         const double                                     change,
+                         const double                                     wall_time)
   {
     const auto &health = problem.filter_result();
     std::vector<std::string> row{std::to_string(iteration)};
@@ -296,6 +317,9 @@ namespace softopt
     row.push_back(CsvWriter::format(health.worst_quality));
     for (unsigned int c = 0; c < 3; ++c)
       row.push_back(CsvWriter::format(health.worst_element[c]));
+    const bool compared = branch && branch->failure.empty();
+    row.push_back(compared ? CsvWriter::format(branch->difference) : "");
+    row.push_back(compared ? (branch->switched ? "1" : "0") : "");
     history->add_row(row);
 
     pcout << "iteration " << std::setw(4) << iteration;
@@ -312,6 +336,12 @@ namespace softopt
     if (!problem.path_report().warm_start_failure.empty())
       pcout << " (path from zero: the warm start failed, "
             << problem.path_report().warm_start_failure << ")";
+    if (compared)
+      pcout << "  from rest: " << (branch->switched ? "another branch" : "same branch")
+            << " (" << std::setprecision(2) << branch->difference << ")"
+            << (branch->switched ? ", the run goes on from the states from rest" : "");
+    else if (branch)
+      pcout << "  (the path from rest failed: " << branch->failure << ")";
     if (output.print_timings)
       pcout << "  " << std::setprecision(3) << wall_time << " s";
     pcout << std::endl;

@@ -12,12 +12,16 @@ namespace softopt
    * them, so no quoting, globbing or command substitution can happen, and
    * a file name from a parameter file stays a file name. Its standard output
    * and error go to @p log_file (created or truncated), its standard input
-   * is /dev/null. The child is killed when the calling process dies (kill
-   * -9 included), so no gmsh outlives an interrupted run. Returns the exit
-   * status, or -1 if the program could not be started or was killed.
+   * is /dev/null, and it inherits no other file of the caller. The child
+   * is killed when the calling process dies (kill -9 included), so no gmsh
+   * outlives an interrupted run. Returns the exit status, or not_found,
+   * cannot_start (no log, no process) or killed.
    */
   int
   run_program(const std::vector<std::string> &argv, const std::string &log_file);
+
+  /** What run_program() returns when the program did not run to its end. */
+  constexpr int not_found = -2, cannot_start = -1, killed = -3;
 
   /** @p argv as one line for a message, each argument in double quotes
    * where it holds a space or a quote (for reading, not for a shell). */

@@ -59,6 +59,12 @@ namespace softopt
     const std::vector<double> &
     target_load_factors() const;
 
+    /** The load factors of a path from rest that a user would follow on
+     * the bench, that of the final analysis: the targets and "Final
+     * analysis steps" equal steps in (0, 1]. */
+    std::vector<double>
+    load_path_from_rest() const;
+
     /** The file's objectives and constraints (and "V" if added), in order. */
     const std::vector<const Functional *> &
     functionals() const;
@@ -74,6 +80,29 @@ namespace softopt
      */
     std::vector<double>
     evaluate(DesignIterate &x);
+
+    /** What check_branch() found. */
+    struct BranchCheck
+    {
+      /** max over the functionals of |g_warm - g_rest| / |g_rest|. */
+      double difference = 0;
+      /** Whether the run goes on from the states from rest. */
+      bool switched = false;
+      /** Why the path from rest failed ("" if it did not). */
+      std::string failure;
+    };
+
+    /**
+     * Loads the design of @p x, just evaluated to @p values, from rest along
+     * load_path_from_rest() and compares the functionals there with
+     * @p values. If one differs by more than @p tolerance (relative), the
+     * warm-started states were on another branch than inflating the design
+     * reaches: x.states and @p values become those from rest and the
+     * secant forgets the design before (its states are on the other
+     * branch). If the path from rest fails, @p x stays as it is.
+     */
+    BranchCheck
+    check_branch(DesignIterate &x, std::vector<double> &values, const double tolerance);
 
     /** dg/dd of every functional at @p x, just evaluated, by the adjoint
      * method (Eqs. sens01-sens06). */
@@ -95,9 +124,9 @@ namespace softopt
     void
     remesh(DesignIterate &x, const std::string &msh_file);
 
-    /** Makes @p x this problem's iterate: builds its mesh if it is another
-     * (a checkpoint's), sets X_o and psi, and sets the filter up on X_o.
-     * @p x must have the layout of its mesh. */
+    /** Makes @p x, an iterate on this problem's mesh (a snapshot, a
+     * checkpoint read on the mesh it names), this problem's iterate: sets
+     * X_o and psi and sets the filter up on X_o. */
     void
     restore(const DesignIterate &x);
 

@@ -30,6 +30,11 @@ namespace softopt
     unsigned int output_interval      = 10;
     unsigned int checkpoint_interval  = 10;
     unsigned int final_analysis_steps = 20;
+    /** Every this many iterations (and at mesh updates) the states are
+     * checked against those from rest (0: never). */
+    unsigned int from_rest_interval = 10;
+    /** Relative difference of a functional that counts as another branch. */
+    double       branch_tolerance   = 1e-3;
     bool         warm_start           = true;
     /** Whether the warm start extrapolates the states along the secant
      * through the last two designs (SecantPredictor). */

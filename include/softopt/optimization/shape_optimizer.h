@@ -59,15 +59,23 @@ namespace softopt
     update_mesh(const unsigned int k, DesignIterate &x);
 
     /** The functional values at x.d into @p values; a refused d is halved
-     * towards the accepted design (if @p may_halve, at most Step halvings
-     * times; a mesh update to it is undone first). Returns why the run
-     * stops, or "" once d is accepted. */
+     * towards the accepted design (at most Step halvings times; a mesh
+     * update to it is undone first). Returns why the run stops, or "" once
+     * d is accepted. */
     std::string
     evaluate_or_halve(const unsigned int            k,
-                      const bool                    may_halve,
                       std::optional<DesignIterate> &before_update,
                       DesignIterate                &x,
                       std::vector<double>          &values);
+
+    /** At iteration @p k (the run started at @p first), if due, loads the
+     * design from rest and goes on from those states if the warm-started
+     * ones are on another branch (DesignProblem::check_branch()). */
+    std::optional<DesignProblem::BranchCheck>
+    check_branch(const unsigned int   k,
+                 const unsigned int   first,
+                 DesignIterate       &x,
+                 std::vector<double> &values);
 
     /** A fresh MMA on the design variables of @p x (start, mesh update). */
     void
@@ -87,10 +95,11 @@ namespace softopt
 
     /** The row of history.csv and the line on screen. */
     void
-    record(const unsigned int         iteration,
-           const std::vector<double> &values,
-           const double               change,
-           const double               wall_time);
+    record(const unsigned int                               iteration,
+           const std::vector<double>                       &values,
+           const std::optional<DesignProblem::BranchCheck> &branch,
+           const double                                     change,
+           const double                                     wall_time);
 
     /** The design of @p x undeformed and deformed at each target (VTU/PVD). */
     void

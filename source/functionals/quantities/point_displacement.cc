@@ -14,8 +14,9 @@ namespace softopt
      * u . v at one node of the surface: the travel of a fingertip, or of a
      * marker tracked on video, along the subsection's direction field v(X).
      * The node is the surface node nearest to "Point" in the initial
-     * design X_o of the current mesh (as "Tracked points" chooses it), so it
-     * stays the same node, and Q differentiable, between mesh updates.
+     * design X_o of the current mesh (nearest_surface_nodes(), which
+     * "Tracked points" searches in X), so it stays the same node, and Q
+     * differentiable, between mesh updates.
      */
     class PointDisplacement : public Quantity
     {
@@ -27,9 +28,10 @@ namespace softopt
                           "0, 0, 0",
                           vector_pattern(),
                           "point displacement: the point whose displacement "
-                          "is measured, in mm in the design configuration "
-                          "(replaced by the nearest node of the mesh on the "
-                          "body's surface).");
+                          "is measured, in mm (replaced by the node of the "
+                          "mesh on the body's surface nearest to it in the "
+                          "initial design X_o of the current mesh: the mesh "
+                          "as read, moved by the mesh updates).");
       }
 
       PointDisplacement(ParameterHandler  &prm,
