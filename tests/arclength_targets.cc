@@ -19,9 +19,10 @@ main(int argc, char **argv)
   const auto             none = [](const auto &, const auto &) { return std::string(); };
   const std::vector<double> targets{0.3, 0.6};
 
-  softopt::PathFollowing arclength;
-  arclength.method            = softopt::PathFollowing::Method::arclength;
-  arclength.initial_increment = 0.07;
+  softopt::PathFollowing::Parameters arclength_parameters;
+  arclength_parameters.method            = softopt::PathFollowing::Method::arclength;
+  arclength_parameters.initial_increment = 0.07;
+  const softopt::PathFollowing arclength(arclength_parameters);
   const auto on_arc = arclength.run(*sphere.problem, newton, targets, none, quiet);
 
   softopt::PathFollowing load_control;

@@ -34,14 +34,15 @@ main(int argc, char **argv)
 
   // A state on the descending branch: arclength past the maximum (load
   // factor 1.186) until the load factor falls below 1 again.
-  softopt::PathFollowing path;
-  path.method            = softopt::PathFollowing::Method::arclength;
-  path.initial_increment = 0.1;
-  path.maximum_increment = 0.1;
-  path.maximum_steps     = 80;
+  softopt::PathFollowing::Parameters path_parameters;
+  path_parameters.method            = softopt::PathFollowing::Method::arclength;
+  path_parameters.initial_increment = 0.1;
+  path_parameters.maximum_increment = 0.1;
+  path_parameters.maximum_steps     = 80;
   ConditionalOStream quiet(std::cout, false);
   auto               guess = physics.create_vector();
   double             last = 0, at = 0;
+  const softopt::PathFollowing path(path_parameters);
   path.run(
     physics,
     settings.newton,

@@ -25,16 +25,17 @@ follow(const double A, const double B, const double h, const double p_over_mu)
     }
   const double exact_max = closed_form_pressure((lo + hi) / 2, ratio);
 
-  softopt::PathFollowing path;
-  path.method              = softopt::PathFollowing::Method::arclength;
-  path.initial_increment   = 0.1;
-  path.maximum_increment   = 0.2;
-  path.maximum_steps       = 60;
+  softopt::PathFollowing::Parameters path_parameters;
+  path_parameters.method              = softopt::PathFollowing::Method::arclength;
+  path_parameters.initial_increment   = 0.1;
+  path_parameters.maximum_increment   = 0.2;
+  path_parameters.maximum_steps       = 60;
   softopt::NewtonSolver newton;
   ConditionalOStream    quiet(std::cout, false);
 
   double       max_load = 0, max_stretch = 0, last_load = 0, last_volume = 0;
   unsigned int descending = 0;
+  const softopt::PathFollowing path(path_parameters);
   const auto   result     = path.run(
     *sphere.problem, newton, {1.},
     [&](const softopt::PathFollowing::PathPoint &point, const auto &a) {

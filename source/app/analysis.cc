@@ -136,7 +136,7 @@ namespace softopt
     };
 
     record({0, 0., 0, 0., false}, a);
-    const PathFollowing::Result result = settings.loading.path.run(
+    const PathFollowing::Result result = PathFollowing(settings.loading.path).run(
       problem, settings.newton, targets, record, pcout);
     pcout << "Stopped: " << result.stop_reason << std::endl;
     if (Utilities::MPI::this_mpi_process(comm) == 0)

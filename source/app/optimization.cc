@@ -106,8 +106,8 @@ namespace softopt
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       std::filesystem::create_directories(final_directory);
     MPI_Barrier(comm);
-    // The design's targets and equal steps, as the loop's check from rest.
-    const std::vector<double> targets = problem.load_path_from_rest();
+    // The design's targets and equal steps.
+    const std::vector<double> targets = problem.final_analysis_path();
     const auto result = follow_load_path(problem.hyperelastic_problem(),
                                          problem.design_configuration(),
                                          settings,

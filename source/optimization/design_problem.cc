@@ -32,6 +32,7 @@ namespace softopt
     : parameters(parameters)
     , comm(comm)
     , filter(parameters.shape_filter)
+    , path_following(parameters.loading.path)
     , timer_output(comm, std::cout, TimerOutput::never, TimerOutput::wall_times)
   {
     build(mesh_file);
@@ -163,7 +164,7 @@ namespace softopt
     else
       {
         ConditionalOStream quiet(std::cout, false);
-        const auto         result = parameters.loading.path.run(
+        const auto         result = path_following.run(
           *problem,
           parameters.newton,
           targets,
@@ -191,7 +192,7 @@ namespace softopt
 
 
   std::vector<double>
-  DesignProblem::load_path_from_rest() const
+  DesignProblem::final_analysis_path() const
   {
     std::vector<double> path = targets;
     const unsigned int  n    = parameters.optimization.final_analysis_steps;
@@ -210,10 +211,10 @@ namespace softopt
     TimerOutput::Scope scope(timer_output, "path from rest");
     BranchCheck        check;
     ConditionalOStream quiet(std::cout, false);
-    const auto         result = parameters.loading.path.run(
+    const auto         result = path_following.run(
       *problem,
       parameters.newton,
-      load_path_from_rest(),
+      targets,
       [](const PathFollowing::PathPoint &, const Vector &) { return std::string(); },
       quiet);
     std::map<double, Vector> from_rest;

@@ -24,7 +24,7 @@ namespace softopt
                       Patterns::Double(0),
                       "The path stops once the cavity volume exceeds this "
                       "multiple of its initial volume (0: no limit).");
-    PathFollowing::declare_parameters(prm);
+    PathFollowing::Parameters::declare_parameters(prm);
     prm.leave_subsection();
   }
 

@@ -12,7 +12,7 @@
 namespace softopt
 {
   void
-  PathFollowing::declare_parameters(ParameterHandler &prm)
+  PathFollowing::Parameters::declare_parameters(ParameterHandler &prm)
   {
     prm.declare_entry("Path following",
                       "load control",
@@ -57,7 +57,7 @@ namespace softopt
 
 
   void
-  PathFollowing::parse_parameters(ParameterHandler &prm, const InputFile &input)
+  PathFollowing::Parameters::parse_parameters(ParameterHandler &prm, const InputFile &input)
   {
     method = prm.get("Path following") == "arclength" ? Method::arclength :
                                                          Method::load_control;
@@ -71,6 +71,18 @@ namespace softopt
                 ExcMessage(input.where("Loading", "Minimum load increment") +
                            ": must not exceed the initial load increment."));
   }
+
+
+
+  PathFollowing::PathFollowing()
+    : PathFollowing(Parameters())
+  {}
+
+
+
+  PathFollowing::PathFollowing(const Parameters &parameters)
+    : parameters(parameters)
+  {}
 
 
 
@@ -92,22 +104,22 @@ namespace softopt
     Point                      previous = current;
     bool                       has_previous = false;
     std::unique_ptr<Arclength> arclength;
-    if (method == Method::arclength)
+    if (parameters.method == Method::arclength)
       arclength = std::make_unique<Arclength>(
-        problem, newton, current.a, 0., load_factor_weight);
+        problem, newton, current.a, 0., parameters.load_factor_weight);
     // The step size: a load increment, or its arclength.
     const auto size_of = [&](const double load_increment) {
       return arclength ? arclength->arclength_of(load_increment) : load_increment;
     };
-    double       size        = size_of(initial_increment);
+    double       size        = size_of(parameters.initial_increment);
     unsigned int next_target = 0;
 
     for (unsigned int step = 1; result.stop_reason.empty(); ++step)
       {
-        if (step > maximum_steps)
+        if (step > parameters.maximum_steps)
           {
             result.stop_reason = "reached the maximum number of steps (" +
-                                 std::to_string(maximum_steps) + ")";
+                                 std::to_string(parameters.maximum_steps) + ")";
             break;
           }
         const double target = targets[next_target];
@@ -151,7 +163,7 @@ namespace softopt
                 << current.load_factor << ": " << failure.what()
                 << "; halving the step" << std::endl;
             --step;
-            if (size < size_of(minimum_increment))
+            if (size < size_of(parameters.minimum_increment))
               {
                 std::ostringstream reason;
                 reason << "the load step could not be solved above load "
@@ -172,9 +184,9 @@ namespace softopt
         // Grow the step when Newton converges fast, shrink it when not; a
         // step shortened to land on a target does not shrink the next one.
         if (next.iterations <= 3)
-          size = std::min(size_of(maximum_increment), 1.5 * size);
+          size = std::min(size_of(parameters.maximum_increment), 1.5 * size);
         else if (next.iterations >= 7)
-          size = std::max(size_of(minimum_increment), 0.7 * size);
+          size = std::max(size_of(parameters.minimum_increment), 0.7 * size);
 
         previous     = std::move(current);
         current      = std::move(next);

@@ -59,11 +59,11 @@ namespace softopt
     const std::vector<double> &
     target_load_factors() const;
 
-    /** The load factors of a path from rest that a user would follow on
-     * the bench, that of the final analysis: the targets and "Final
-     * analysis steps" equal steps in (0, 1]. */
+    /** The load factors of the final analysis, the path a user follows on
+     * the bench: the targets and "Final analysis steps" equal steps in
+     * (0, 1]. */
     std::vector<double>
-    load_path_from_rest() const;
+    final_analysis_path() const;
 
     /** The file's objectives and constraints (and "V" if added), in order. */
     const std::vector<const Functional *> &
@@ -93,8 +93,9 @@ namespace softopt
     };
 
     /**
-     * Loads the design of @p x, just evaluated to @p values, from rest along
-     * load_path_from_rest() and compares the functionals there with
+     * Loads the design of @p x, just evaluated to @p values, from rest to
+     * the targets (as a design without warm start is: Loading's path
+     * following and increments) and compares the functionals there with
      * @p values. If one differs by more than @p tolerance (relative), the
      * warm-started states were on another branch than inflating the design
      * reaches: x.states and @p values become those from rest and the
@@ -219,6 +220,7 @@ namespace softopt
     std::unique_ptr<DesignConfiguration>          design;
     std::unique_ptr<HyperelasticProblem>          problem;
     ShapeFilter                                   filter;
+    const PathFollowing                           path_following;
     /** The statistics of the physics on earlier meshes of the run. */
     HyperelasticProblem::Statistics               earlier_meshes_statistics;
     std::vector<const Functional *>               functionals_;

@@ -33,7 +33,7 @@ namespace softopt
     double maximum_volume_ratio = 0;
 
     /** Load control or arclength, and its step sizes. */
-    PathFollowing path;
+    PathFollowing::Parameters path;
   };
 } // namespace softopt
 

@@ -25,14 +25,36 @@ namespace softopt
   class PathFollowing
   {
   public:
-    /** Declares the entries of the path in the current subsection
-     * ("Loading", see Loading). */
-    static void
-    declare_parameters(ParameterHandler &prm);
+    enum class Method
+    {
+      load_control,
+      arclength
+    };
 
-    /** Reads them from the current subsection. */
-    void
-    parse_parameters(ParameterHandler &prm, const InputFile &input);
+    /** Its entries of subsection "Loading" (which Loading declares). */
+    struct Parameters
+    {
+      /** Declares the entries in the current subsection. */
+      static void
+      declare_parameters(ParameterHandler &prm);
+
+      /** Reads them from the current subsection. */
+      void
+      parse_parameters(ParameterHandler &prm, const InputFile &input);
+
+      Method method = Method::load_control;
+      /** The weight w of the load factor in the arclength constraint. */
+      double       load_factor_weight = 1;
+      double       initial_increment  = 1;
+      double       minimum_increment  = 1e-4;
+      double       maximum_increment  = 1.;
+      unsigned int maximum_steps      = 200;
+    };
+
+    /** With the default parameters (load control, one step). */
+    PathFollowing();
+
+    explicit PathFollowing(const Parameters &parameters);
 
     /** A converged point of the path. */
     struct PathPoint
@@ -77,23 +99,9 @@ namespace softopt
         const Observer            &observer,
         const ConditionalOStream  &log) const;
 
-    enum class Method
-    {
-      load_control,
-      arclength
-    };
-
-    Method method = Method::load_control;
-
-    /** The weight w of the load factor in the arclength constraint. */
-    double load_factor_weight = 1;
-
-    double       initial_increment = 1;
-    double       minimum_increment = 1e-4;
-    double       maximum_increment = 1.;
-    unsigned int maximum_steps     = 200;
-
   private:
+    const Parameters parameters;
+
     /** Newton at fixed @p load_factor from @p current, predicted along the
      * line from @p current through @p guide (if given). */
     static Arclength::Point
