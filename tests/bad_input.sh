@@ -30,6 +30,14 @@ for prm in "$folder"/*.prm; do
   fi
 done
 
+# A refused initial design writes no design.stl.
+if [ -e results-first-design/design.stl ]; then
+  echo "FAIL first_design_refused: design.stl was written for a design never accepted"
+  failures=$((failures + 1))
+else
+  echo "ok   first_design_refused writes no design.stl"
+fi
+
 # The diverging run: load_path.csv holds its header and the converged rows.
 csv=results-divergence/load_path.csv
 if [ ! -f $csv ] || ! head -n 1 $csv | grep -q '^step,load_factor' ||

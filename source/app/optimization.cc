@@ -93,6 +93,8 @@ namespace softopt
     const std::string  reason = optimizer.run(restart);
     pcout << "Stopped: " << reason << std::endl;
     out.write_text("stop_reason.txt", reason + "\n");
+    if (!optimizer.accepted_a_design())
+      return 1;
 
     // The final design: the last one the physics accepted (a refused
     // design leaves it in place, DesignProblem::evaluate).

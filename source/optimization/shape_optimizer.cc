@@ -35,6 +35,7 @@ namespace softopt
     DesignIterate      x     = problem.initial_iterate();
     unsigned int       k     = restart ? resume(x) : 0;
     const unsigned int first = k;
+    any_accepted             = restart; // the checkpoint's run accepted some
     if (!restart)
       {
         reset_mma(x);
@@ -68,6 +69,7 @@ namespace softopt
             stopped_on_error = true;
             return refused;
           }
+        any_accepted = true;
         const auto branch = check_branch(k, first, x, values); // states from rest?
         const auto gradients = problem.gradients(x); // adjoints, Eqs. sens01-06
         x.accepted           = x.d;
@@ -91,6 +93,14 @@ namespace softopt
   ShapeOptimizer::failed() const
   {
     return stopped_on_error;
+  }
+
+
+
+  bool
+  ShapeOptimizer::accepted_a_design() const
+  {
+    return any_accepted;
   }
 
 
@@ -178,9 +188,13 @@ namespace softopt
           if (halving == parameters.step_halvings || step.linfty_norm() == 0)
             return "the design of iteration " + std::to_string(k) +
                    " was refused: " + reason +
-                   " The last accepted design is that of iteration " +
-                   std::to_string(k - 1) + "; checkpoints are in " +
-                   Checkpoint::directory(out.path()) + ".";
+                   (k == 0 ? " No design was accepted: the initial design "
+                             "itself cannot be analyzed (try it with \"softopt "
+                             "analyze\"), so no design.stl and no final analysis "
+                             "are written." :
+                             " The last accepted design is that of iteration " +
+                               std::to_string(k - 1) + "; checkpoints are in " +
+                               Checkpoint::directory(out.path()) + ".");
           // d <- (d_accepted + d) / 2: a shorter step in the same direction,
           // which MMA's next update starts from.
           x.d.sadd(0.5, 0.5, x.accepted);

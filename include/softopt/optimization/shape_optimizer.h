@@ -49,6 +49,11 @@ namespace softopt
     bool
     failed() const;
 
+    /** Whether any design was accepted (false if the initial design was
+     * refused): only then is there a design to write. */
+    bool
+    accepted_a_design() const;
+
   private:
     /** X_o <- X_o + psi(d), d <- 0 and a fresh MMA, at iteration @p k;
      * remeshes the design if its worst element quality is below "Remesh
@@ -114,6 +119,7 @@ namespace softopt
     std::unique_ptr<CsvWriter>    history;
     std::map<std::string, std::unique_ptr<PvdSeries>> snapshots;
     bool                          stopped_on_error = false;
+    bool                          any_accepted     = false;
   };
 } // namespace softopt
 
