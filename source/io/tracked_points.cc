@@ -1,12 +1,7 @@
-#include <deal.II/base/mpi.h>
-#include <deal.II/grid/reference_cell.h>
-
 #include <softopt/io/csv_writer.h>
 #include <softopt/io/tracked_points.h>
-#include <softopt/shape/cell_nodes.h>
 
 #include <algorithm>
-#include <limits>
 
 namespace softopt
 {
