@@ -16,22 +16,13 @@ namespace softopt
   {
     const auto comm = design.get_dof_handler().get_communicator();
 
-    // Triangles of this rank as 9 floats each (x, y, z of three corners):
-    // four per face, split at its midside nodes (m_k opposite corner k).
+    // Triangles of this rank as 9 floats each (x, y, z of three corners).
     std::vector<float> local;
     for (const auto &face : locally_owned_boundary_faces(design))
-      {
-        const auto &[c, m, id] = face;
-        const std::array<std::array<Point<3>, 3>, 4> triangles{
-          {{{c[0], m[2], m[1]}},
-           {{c[1], m[0], m[2]}},
-           {{c[2], m[1], m[0]}},
-           {{m[0], m[1], m[2]}}}};
-        for (const auto &t : triangles)
-          for (const auto &p : t)
-            for (unsigned int d = 0; d < 3; ++d)
-              local.push_back(static_cast<float>(p[d]));
-      }
+      for (const auto &t : flat_triangles(face))
+        for (const auto &p : t)
+          for (unsigned int d = 0; d < 3; ++d)
+            local.push_back(static_cast<float>(p[d]));
 
     const auto all = Utilities::MPI::gather(comm, local, 0);
     unsigned int n_triangles = 0;

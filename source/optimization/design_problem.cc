@@ -5,8 +5,10 @@
 #include <softopt/optimization/design_problem.h>
 #include <softopt/shape/remesh.h>
 #include <softopt/shape/residual_shape_derivative.h>
+#include <softopt/shape/self_intersection.h>
 
 #include <algorithm>
+#include <sstream>
 
 namespace softopt
 {
@@ -152,6 +154,18 @@ namespace softopt
       last_filter_result = filter.solve(x.d, psi);
       design->set_shape_field(psi);
     }
+    if (parameters.optimization.refuse_self_intersections)
+      {
+        TimerOutput::Scope scope(timer_output, "self-intersection test");
+        const auto         found = design_self_intersections(*design);
+        std::ostringstream where;
+        where << found.where;
+        AssertThrow(found.pairs == 0,
+                    ExcMessage("The design surface intersects itself (" +
+                               std::to_string(found.pairs) +
+                               " pairs of triangles, one near (" + where.str() +
+                               ") mm); the shape is refused."));
+      }
 
     TimerOutput::Scope scope(timer_output, "path following");
     report     = PathReport();
@@ -397,6 +411,15 @@ namespace softopt
   DesignProblem::filter_result() const
   {
     return last_filter_result;
+  }
+
+
+
+  std::pair<double, double>
+  DesignProblem::element_quality(const DesignIterate &x) const
+  {
+    return {filter.mesh_health(x.psi).worst_quality,
+            filter.mesh_health(design->create_vector()).worst_quality};
   }
 
 

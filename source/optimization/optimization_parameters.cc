@@ -39,8 +39,21 @@ namespace softopt
                       "mesh-<iteration>.msh into the output directory; d, psi "
                       "and MMA start afresh and the physics follows the path "
                       "from zero. For designs that flatten elements the mesh "
-                      "update keeps (thin walls one element thick). 0: never, "
-                      "as in the paper.");
+                      "update keeps (thin walls one element thick). Between "
+                      "mesh updates, an accepted design whose worst element "
+                      "falls below this (while the mesh it is on, psi = 0, "
+                      "is above it) brings the mesh update forward to the "
+                      "next iteration, so that elements do not collapse "
+                      "between updates. 0: never, as in the paper.");
+    prm.declare_entry("Refuse self-intersecting designs",
+                      "true",
+                      Patterns::Bool(),
+                      "Whether every design's surface is tested for "
+                      "self-intersection (CGAL, exact predicates; 1 % of an "
+                      "iteration of the quick gripper) and a design that passes through "
+                      "itself is refused like an inverted one (the step is "
+                      "halved). Such a design cannot be cast, and the model, "
+                      "which has no contact, would go on computing it.");
     prm.declare_entry("Output interval",
                       "10",
                       Patterns::Integer(0),
@@ -90,7 +103,9 @@ namespace softopt
                       "functional differs by more "
                       "than Branch tolerance, the run goes on from the states "
                       "reached from rest, says so on the iteration line and "
-                      "marks it in history.csv (branch_switched). 0: never "
+                      "marks it in history.csv (branch_switched); after such "
+                      "a switch the next iterations are checked too, until "
+                      "one agrees. 0: never "
                       "(the loop may then report a state the cast part is "
                       "not in; see doc/theory.md).");
     prm.declare_entry("Branch tolerance",
@@ -129,6 +144,7 @@ namespace softopt
     warm_start           = prm.get_bool("Warm start");
     secant_predictor     = prm.get("Warm start predictor") == "secant";
     step_halvings        = prm.get_integer("Step halvings");
+    refuse_self_intersections = prm.get_bool("Refuse self-intersecting designs");
     prm.leave_subsection();
   }
 } // namespace softopt

@@ -57,9 +57,10 @@ namespace softopt
         // the iteration's mesh update as the uninterrupted run does.
         if (k > first && opt.every(k, opt.checkpoint_interval))
           Checkpoint::save(out.path(), k, x);
-        auto before_update = opt.every(k, opt.mesh_update_interval) ?
-                               update_mesh(k, x) : // X_o <- X_o + psi(d), d <- 0
-                               std::nullopt;
+        auto before_update =
+          opt.every(k, opt.mesh_update_interval) || elements_collapsing(k, x) ?
+            update_mesh(k, x) : // X_o <- X_o + psi(d), d <- 0
+            std::nullopt;
 
         Timer               timer;
         std::vector<double> values; // psi(d), X, path to every target
@@ -155,6 +156,25 @@ namespace softopt
 
 
 
+  bool
+  ShapeOptimizer::elements_collapsing(const unsigned int k, const DesignIterate &x) const
+  {
+    // Elements the design has flattened since the last mesh update (not
+    // those of a mesh that is poor itself: remeshing would not help).
+    const double threshold = parameters.remesh_quality;
+    if (k == 0 || threshold == 0 || OptimizationParameters::every(k, parameters.mesh_update_interval))
+      return false;
+    const auto [design, mesh] = problem.element_quality(x);
+    if (design >= threshold || mesh < threshold)
+      return false;
+    pcout << "  iteration " << k << ": worst element quality " << design << " < "
+          << threshold << " since the last mesh update: the mesh update "
+          << "comes forward to this iteration" << std::endl;
+    return true;
+  }
+
+
+
   std::string
   ShapeOptimizer::evaluate_or_halve(const unsigned int            k,
                                     std::optional<DesignIterate> &before_update,
@@ -212,14 +232,18 @@ namespace softopt
                                std::vector<double> &values)
   {
     // A path from zero needs no check; after a warm start, check every
-    // "Path from rest interval" iterations, at every mesh update, and at
-    // the first iteration of a restart.
+    // "Path from rest interval" iterations, at every mesh update, at the
+    // first iteration of a restart, and after a check that switched branch
+    // (the designs there have several equilibria: the warm start can leave
+    // the physical one again at any iteration).
     const auto &opt = parameters;
     if (!problem.path_report().warm_started || opt.from_rest_interval == 0 ||
-        !(k == first || opt.every(k, opt.from_rest_interval) ||
+        !(k == first || switched_last_check || opt.every(k, opt.from_rest_interval) ||
           opt.every(k, opt.mesh_update_interval)))
       return std::nullopt;
-    return problem.check_branch(x, values, opt.branch_tolerance);
+    const auto check    = problem.check_branch(x, values, opt.branch_tolerance);
+    switched_last_check = check.switched;
+    return check;
   }
 
 

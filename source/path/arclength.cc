@@ -68,6 +68,9 @@ namespace softopt
         problem.update(next.a, Du);
       }
     next.load_factor = current.load_factor + Dl;
+    // The predictor's increment: a converged step must go on along it.
+    const Vector Du_0 = Du;
+    const double Dl_0 = Dl;
 
     NewtonSolver::Monitor monitor(newton);
     for (unsigned int iteration = 0;; ++iteration)
@@ -81,6 +84,10 @@ namespace softopt
                    1e-6 * initial_load_norm);
         if (monitor.converged(iteration, norm, load_norm))
           {
+            // Near a sharp fold the corrector can converge to a point behind
+            // the current one; the path would then trace itself backwards.
+            if (previous != nullptr && Du * Du_0 + psi_squared * Dl * Dl_0 <= 0)
+              throw StepFailure("the step turned back along the path");
             next.iterations    = iteration;
             next.residual_norm = norm;
             return next;

@@ -48,6 +48,17 @@ namespace softopt
                       "1",
                       Patterns::Double(1e-12),
                       "The load factor increment never grows beyond this.");
+    prm.declare_entry("Load control at a limit point",
+                      "arclength",
+                      Patterns::Selection("arclength|stop"),
+                      "What load control does when a step fails three times "
+                      "from one converged point past the first, as at a "
+                      "pressure maximum. arclength: the rest of the path is "
+                      "followed with the arclength method, through the limit "
+                      "point; a target above it is reached where the path "
+                      "first crosses it, on the branch a part inflated from "
+                      "rest snaps to (doc/theory.md). stop: the path stops "
+                      "there (after halving down to the minimum increment).");
     prm.declare_entry("Maximum number of steps",
                       "200",
                       Patterns::Integer(1),
@@ -66,6 +77,8 @@ namespace softopt
     minimum_increment    = prm.get_double("Minimum load increment");
     maximum_increment    = prm.get_double("Maximum load increment");
     maximum_steps        = prm.get_integer("Maximum number of steps");
+    arclength_past_limit_points =
+      prm.get("Load control at a limit point") == "arclength";
 
     AssertThrow(minimum_increment <= initial_increment,
                 ExcMessage(input.where("Loading", "Minimum load increment") +
@@ -113,6 +126,7 @@ namespace softopt
     };
     double       size        = size_of(parameters.initial_increment);
     unsigned int next_target = 0;
+    unsigned int failures    = 0; // of steps from the current point
 
     for (unsigned int step = 1; result.stop_reason.empty(); ++step)
       {
@@ -163,6 +177,24 @@ namespace softopt
                 << current.load_factor << ": " << failure.what()
                 << "; halving the step" << std::endl;
             --step;
+            if (!arclength && parameters.arclength_past_limit_points &&
+                has_previous && ++failures == 3)
+              {
+                // Load control cannot pass a limit point: arclength, scaled
+                // by the linear response at rest as from the start, goes on
+                // along the secant through the last two converged points.
+                arclength = std::make_unique<Arclength>(problem,
+                                                        newton,
+                                                        problem.create_vector(),
+                                                        0.,
+                                                        parameters.load_factor_weight);
+                size                  = arclength->arclength_of(size);
+                result.arclength_from = current.load_factor;
+                log << "    load control cannot go on above load factor "
+                    << current.load_factor << " (a limit point?): the path "
+                    << "goes on with arclength" << std::endl;
+                continue;
+              }
             if (size < size_of(parameters.minimum_increment))
               {
                 std::ostringstream reason;
@@ -171,15 +203,17 @@ namespace softopt
                        << " (the last converged one) even with the minimum "
                        << (arclength ? "arclength" : "load increment")
                        << ": " << failure.what()
-                       << (arclength ? "" :
-                                       ". If the pressure has a maximum there "
-                                       "(a limit point), set \"Path following "
-                                       "= arclength\"");
+                       << (arclength || parameters.arclength_past_limit_points ?
+                             "" :
+                             ". If the pressure has a maximum there (a limit "
+                             "point), set \"Load control at a limit point = "
+                             "arclength\" or \"Path following = arclength\"");
                 result.stop_reason = reason.str();
                 result.failed      = true;
               }
             continue;
           }
+        failures = 0;
 
         // Grow the step when Newton converges fast, shrink it when not; a
         // step shortened to land on a target does not shrink the next one.
@@ -202,6 +236,16 @@ namespace softopt
             result.target_states.push_back(current.a);
           }
         result.stop_reason = observer(result.last, current.a);
+        // A path that turns back to zero load does not reach the target
+        // on this branch (an arclength path after a fold, say).
+        if (result.stop_reason.empty() && current.load_factor <= 0)
+          {
+            result.stop_reason = "the path returned to zero load (load factor " +
+                                 std::to_string(current.load_factor) +
+                                 ") without reaching load factor " +
+                                 std::to_string(target);
+            result.failed = true;
+          }
         if (result.stop_reason.empty() && lands &&
             ++next_target == targets.size())
           result.stop_reason = "reached the last target load factor";

@@ -56,4 +56,16 @@ namespace softopt
         }
     return faces;
   }
+
+
+  std::array<std::array<Point<3>, 3>, 4>
+  flat_triangles(const BoundaryFace &face)
+  {
+    const auto &c = face.corner;
+    const auto &m = face.midpoint; // m[k] opposite corner k
+    return {{{{c[0], m[2], m[1]}},
+             {{c[1], m[0], m[2]}},
+             {{c[2], m[1], m[0]}},
+             {{m[0], m[1], m[2]}}}};
+  }
 } // namespace softopt

@@ -135,6 +135,11 @@ namespace softopt
     const ShapeFilter::Result &
     filter_result() const;
 
+    /** The worst element quality of the accepted design X_o + psi of @p x
+     * and of its mesh X_o (psi = 0), on this problem's mesh. */
+    std::pair<double, double>
+    element_quality(const DesignIterate &x) const;
+
     const HyperelasticProblem &
     hyperelastic_problem() const;
 

@@ -25,7 +25,8 @@ namespace softopt
     double design_bound = 1.2;
     unsigned int mesh_update_interval = 50;
     /** A mesh update remeshes the design when its worst element quality
-     * is below this (0: never). */
+     * is below this, and an accepted design below it brings the update
+     * forward (0: never). */
     double       remesh_quality       = 0;
     unsigned int output_interval      = 10;
     unsigned int checkpoint_interval  = 10;
@@ -41,6 +42,8 @@ namespace softopt
     bool         secant_predictor     = true;
     /** Halvings of a refused MMA step before the run stops. */
     unsigned int step_halvings = 3;
+    /** Whether a design whose surface intersects itself is refused. */
+    bool refuse_self_intersections = true;
 
     /** Whether iteration @p k > 0 is one of every @p interval (0: none). */
     static bool

@@ -63,6 +63,14 @@ namespace softopt
     std::optional<DesignIterate>
     update_mesh(const unsigned int k, DesignIterate &x);
 
+    /** Whether the accepted design of @p x has flattened an element below
+     * "Remesh below quality" since the last mesh update, on a mesh that
+     * was above it: the mesh update then comes forward to iteration @p k
+     * (and remeshes). Computed from X_o and psi, so a restart decides as
+     * the uninterrupted run did. */
+    bool
+    elements_collapsing(const unsigned int k, const DesignIterate &x) const;
+
     /** The functional values at x.d into @p values; a refused d is halved
      * towards the accepted design (at most Step halvings times; a mesh
      * update to it is undone first). Returns why the run stops, or "" once
@@ -120,6 +128,9 @@ namespace softopt
     std::map<std::string, std::unique_ptr<PvdSeries>> snapshots;
     bool                          stopped_on_error = false;
     bool                          any_accepted     = false;
+    /** The last check switched branch: the design has several equilibria
+     * at a target, and the next iteration is checked too. */
+    bool                          switched_last_check = false;
   };
 } // namespace softopt
 

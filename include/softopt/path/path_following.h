@@ -49,6 +49,11 @@ namespace softopt
       double       minimum_increment  = 1e-4;
       double       maximum_increment  = 1.;
       unsigned int maximum_steps      = 200;
+      /** Load control that cannot go on (three failed steps from one
+       * converged point past the first) follows the rest of the path with
+       * arclength: through a limit point, onto the branch that a part
+       * inflated from rest snaps to. False: it stops there. */
+      bool arclength_past_limit_points = true;
     };
 
     /** With the default parameters (load control, one step). */
@@ -83,6 +88,8 @@ namespace softopt
       bool failed = false;
       /** The last converged point. */
       PathPoint last;
+      /** Where load control handed over to arclength (negative: never). */
+      double arclength_from = -1;
       /** Converged states at the targets reached, in order. */
       std::vector<double>                     target_load_factors;
       std::vector<EquilibriumProblem::Vector> target_states;

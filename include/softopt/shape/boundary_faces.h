@@ -28,6 +28,11 @@ namespace softopt
    */
   std::vector<BoundaryFace>
   locally_owned_boundary_faces(const DesignConfiguration &design);
+
+  /** The four flat triangles of @p face, split at its midside nodes, with
+   * its orientation (design.stl's triangles). */
+  std::array<std::array<Point<3>, 3>, 4>
+  flat_triangles(const BoundaryFace &face);
 } // namespace softopt
 
 #endif

@@ -108,9 +108,11 @@ namespace softopt
     double
     initial_volume() const;
 
-  private:
+    /** The health (J_psi, element quality) of the shape X_o + @p psi. */
     Result
     mesh_health(const Vector &psi) const;
+
+  private:
 
     /** The quadrature of every cell integral of the filter. */
     static const QGaussSimplex<3> &
