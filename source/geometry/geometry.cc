@@ -193,20 +193,17 @@ namespace softopt
         std::vector<std::string> arguments{geo ? "-3" : "-0"};
         if (geo)
           {
-            for (const std::string &a : {"-order", "2"})
-              arguments.push_back(a);
+            arguments.insert(arguments.end(), {"-order", "2"});
             const auto set_number = [&](const std::string &name, const double value) {
               std::ostringstream number;
               number << std::setprecision(17) << value;
-              for (const std::string &a : {std::string("-setnumber"), name, number.str()})
-                arguments.push_back(a);
+              arguments.insert(arguments.end(), {"-setnumber", name, number.str()});
             };
             set_number("h", mesh_size);
             for (const auto &[name, value] : mesh_parameters)
               set_number(name, value);
           }
-        for (const std::string &a : {"-format", "msh22"})
-          arguments.push_back(a);
+        arguments.insert(arguments.end(), {"-format", "msh22"});
         arguments.push_back(mesh_file);
         const std::string error = run_gmsh(arguments, msh_file);
         if (!error.empty())
