@@ -1,3 +1,5 @@
+#include <deal.II/base/mpi.h>
+
 #include <softopt/shape/boundary_faces.h>
 
 namespace softopt
@@ -67,5 +69,23 @@ namespace softopt
              {{c[1], m[0], m[2]}},
              {{c[2], m[1], m[0]}},
              {{m[0], m[1], m[2]}}}};
+  }
+
+
+
+  std::vector<double>
+  gathered_boundary_triangles(const DesignConfiguration &design)
+  {
+    std::vector<double> local;
+    for (const auto &face : locally_owned_boundary_faces(design))
+      for (const auto &t : flat_triangles(face))
+        for (const auto &p : t)
+          for (unsigned int d = 0; d < 3; ++d)
+            local.push_back(p[d]);
+    std::vector<double> all;
+    for (const auto &part :
+         Utilities::MPI::gather(design.get_dof_handler().get_communicator(), local, 0))
+      all.insert(all.end(), part.begin(), part.end());
+    return all;
   }
 } // namespace softopt

@@ -70,24 +70,11 @@ namespace softopt
   SelfIntersection
   design_self_intersections(const DesignConfiguration &design)
   {
-    const auto comm = design.get_dof_handler().get_communicator();
-    // The triangles of design.stl (write_design_stl), in double precision.
-    std::vector<double> local;
-    for (const auto &face : locally_owned_boundary_faces(design))
-      for (const auto &t : flat_triangles(face))
-        for (const auto &p : t)
-          for (unsigned int d = 0; d < 3; ++d)
-            local.push_back(p[d]);
-
-    const auto       all = Utilities::MPI::gather(comm, local, 0);
+    const auto comm    = design.get_dof_handler().get_communicator();
+    const auto corners = gathered_boundary_triangles(design); // design.stl's
     SelfIntersection result;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        std::vector<double> corners;
-        for (const auto &part : all)
-          corners.insert(corners.end(), part.begin(), part.end());
-        result = intersections(corners);
-      }
+      result = intersections(corners);
     result.pairs = Utilities::MPI::broadcast(comm, result.pairs, 0);
     result.where = Utilities::MPI::broadcast(comm, result.where, 0);
     return result;

@@ -33,6 +33,12 @@ namespace softopt
    * its orientation (design.stl's triangles). */
   std::array<std::array<Point<3>, 3>, 4>
   flat_triangles(const BoundaryFace &face);
+
+  /** The flat triangles of every boundary face of the mesh, 9 numbers
+   * each (x, y, z of its three corners), gathered on rank 0 (empty on the
+   * others). Collective. */
+  std::vector<double>
+  gathered_boundary_triangles(const DesignConfiguration &design);
 } // namespace softopt
 
 #endif
