@@ -162,7 +162,7 @@ namespace softopt
     // Elements the design has flattened since the last mesh update (not
     // those of a mesh that is poor itself: remeshing would not help).
     const double threshold = parameters.remesh_quality;
-    if (k == 0 || threshold == 0 || OptimizationParameters::every(k, parameters.mesh_update_interval))
+    if (k == 0 || threshold == 0 || parameters.every(k, parameters.mesh_update_interval))
       return false;
     const auto [design, mesh] = problem.element_quality(x);
     if (design >= threshold || mesh < threshold)
