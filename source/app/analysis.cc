@@ -12,7 +12,10 @@
 #include <softopt/physics/hyperelastic_problem.h>
 #include <softopt/shape/design_configuration.h>
 
+#include <cmath>
 #include <fstream>
+#include <limits>
+#include <tuple>
 
 
 namespace softopt
@@ -33,6 +36,81 @@ namespace softopt
       const auto s_x  = integrate_over_design_surface(problem, design, a, *x_axis, false);
       const auto s_in = integrate_over_design_surface(problem, design, a, *inward, false);
       return {s_x.linear / s_x.area, s_in.linear / s_in.area};
+    }
+
+
+
+    /** A functional's extreme values along a load path, and its value at
+     * its target (if it reads one state). */
+    struct Extrema
+    {
+      double minimum = std::numeric_limits<double>::infinity();
+      double maximum = -std::numeric_limits<double>::infinity();
+      double minimum_kPa = 0, maximum_kPa = 0;
+      double at_target   = std::nan("");
+
+      void
+      add(double value, const double p_kPa)
+      {
+        value += 0.; // no -0 in the summary
+        if (value < minimum)
+          std::tie(minimum, minimum_kPa) = std::make_pair(value, p_kPa);
+        if (value > maximum)
+          std::tie(maximum, maximum_kPa) = std::make_pair(value, p_kPa);
+      }
+    };
+
+
+
+    /** load_path_summary.csv and its printed lines: for each functional its
+     * value at its target beside its best (objectives: lowest; constraints:
+     * highest) value along the path and the pressure there. */
+    void
+    write_summary(const std::vector<const Functional *> &functionals,
+                  const std::vector<Extrema>            &extrema,
+                  const double                           pressure_kPa,
+                  const std::string                     &directory,
+                  const MPI_Comm                         comm,
+                  const ConditionalOStream              &pcout)
+    {
+      CsvWriter summary(directory + "/load_path_summary.csv",
+                        {"functional",
+                         "kind",
+                         "target_pressure_kPa",
+                         "value_at_target",
+                         "minimum",
+                         "pressure_at_minimum_kPa",
+                         "maximum",
+                         "pressure_at_maximum_kPa"},
+                        comm);
+      pcout << "Along the path:" << std::endl;
+      for (unsigned int i = 0; i < functionals.size(); ++i)
+        {
+          const Functional &f = *functionals[i];
+          const Extrema    &e = extrema[i];
+          const bool  objective = f.kind() == Functional::Kind::objective;
+          const char *kind      = objective ? "objective" : "constraint";
+          const double target_kPa =
+            f.load_factors().size() == 1 ? f.load_factors()[0] * pressure_kPa : std::nan("");
+          summary.add_row({f.name(),
+                           kind,
+                           CsvWriter::format(target_kPa),
+                           CsvWriter::format(e.at_target),
+                           CsvWriter::format(e.minimum),
+                           CsvWriter::format(e.minimum_kPa),
+                           CsvWriter::format(e.maximum),
+                           CsvWriter::format(e.maximum_kPa)});
+          pcout << "  " << f.name() << " (" << kind << ", "
+                << (objective ? "lower" : "higher") << " is "
+                << (objective ? "better" : "worse") << "): ";
+          if (std::isnan(e.at_target))
+            pcout << "target " << target_kPa << " kPa not on the path";
+          else
+            pcout << e.at_target << " at its target " << target_kPa << " kPa";
+          pcout << "; lowest " << e.minimum << " at " << e.minimum_kPa
+                << " kPa, highest " << e.maximum << " at " << e.maximum_kPa
+                << " kPa" << std::endl;
+        }
     }
   } // namespace
 
@@ -62,7 +140,8 @@ namespace softopt
     // its target were the current load factor).
     for (const auto *f : functionals)
       columns.push_back(f->name());
-    for (const auto *c : {"newton_iterations", "residual_norm_N", "at_target"})
+    for (const auto *c :
+         {"newton_iterations", "residual_norm_N", "at_target", "limit_point"})
       columns.emplace_back(c);
     CsvWriter load_path(directory + "/load_path.csv", columns, comm);
     PvdSeries pvd(directory + "/solution.pvd", comm);
@@ -88,7 +167,8 @@ namespace softopt
                                                   comm);
       }
 
-    unsigned int vtu_counter = 0;
+    std::vector<Extrema> extrema(functionals.size());
+    unsigned int         vtu_counter = 0;
     const auto   record      = [&](const PathFollowing::PathPoint  &point,
                             const HyperelasticProblem::Vector &state) {
       const double volume           = cavity_volume(problem, design, state);
@@ -101,12 +181,20 @@ namespace softopt
                                    CsvWriter::format(volume - initial_volume),
                                    CsvWriter::format(mean_ux),
                                    CsvWriter::format(mean_in)};
-      for (const auto *f : functionals)
-        row.push_back(CsvWriter::format(
-          f->evaluate_at(problem, design, state)));
+      for (unsigned int i = 0; i < functionals.size(); ++i)
+        {
+          const Functional &f     = *functionals[i];
+          const double      value = f.evaluate_at(problem, design, state);
+          row.push_back(CsvWriter::format(value));
+          extrema[i].add(value, p_kPa);
+          if (point.at_target && f.load_factors().size() == 1 &&
+              f.load_factors()[0] == point.load_factor)
+            extrema[i].at_target = value;
+        }
       row.push_back(std::to_string(point.newton_iterations));
       row.push_back(CsvWriter::format(point.residual_norm));
       row.push_back(point.at_target ? "1" : "0");
+      row.push_back(point.limit_point ? "1" : "0");
       load_path.add_row(row);
       if (tracked)
         {
@@ -126,7 +214,8 @@ namespace softopt
             << std::setprecision(10) << point.load_factor << "  p " << p_kPa
             << " kPa  V " << volume << " mm^3  dV " << volume - initial_volume
             << " mm^3  mean u_x " << mean_ux << " mm  mean u_in " << mean_in
-            << " mm  Newton " << point.newton_iterations << std::endl;
+            << " mm  Newton " << point.newton_iterations
+            << (point.limit_point ? "  (limit point)" : "") << std::endl;
       if (settings.loading.maximum_volume_ratio > 0 &&
           volume > settings.loading.maximum_volume_ratio * initial_volume)
         return std::string("the cavity volume exceeded ") +
@@ -139,6 +228,13 @@ namespace softopt
     const PathFollowing::Result result = PathFollowing(settings.loading.path).run(
       problem, settings.newton, targets, record, pcout);
     pcout << "Stopped: " << result.stop_reason << std::endl;
+    if (!functionals.empty())
+      write_summary(functionals,
+                    extrema,
+                    settings.loading.pressure_kPa,
+                    directory,
+                    comm,
+                    pcout);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       std::ofstream(directory + "/stop_reason.txt") << result.stop_reason << '\n';
     return result;

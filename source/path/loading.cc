@@ -39,6 +39,7 @@ namespace softopt
                                         input.where("Loading", "Target load factors"));
     maximum_volume_ratio = prm.get_double("Maximum cavity volume ratio");
     path.parse_parameters(prm, input);
+    path.full_load_kPa = pressure_kPa;
     prm.leave_subsection();
 
     for (const double t : target_load_factors)

@@ -48,6 +48,27 @@ namespace softopt
                       "1",
                       Patterns::Double(1e-12),
                       "The load factor increment never grows beyond this.");
+    prm.declare_entry("Arclength maximum turning angle",
+                      "10",
+                      Patterns::Double(0.01, 60),
+                      "Arclength step control (degrees): the angle between a "
+                      "step's predictor and its converged increment, about "
+                      "the curvature of the path times the arclength, stays "
+                      "near this. Steps that turn more than twice as far are "
+                      "redone shorter, the next step shrinks or grows by the "
+                      "ratio (at most 1.5 times). Smaller: more rows where "
+                      "the response bends, as at a pressure maximum.");
+    prm.declare_entry("Arclength maximum state change",
+                      "0.25",
+                      Patterns::Double(1e-6),
+                      "Arclength step control (dimensionless): the change "
+                      "of the displacement in one step, |Delta u|, stays "
+                      "below this multiple of the linear response at rest "
+                      "to the full load, |u_f^0|; it also sets the first "
+                      "arclength if that is smaller than the initial load "
+                      "increment's. Smaller: more rows where the part "
+                      "deforms much at little change of the load, as on a "
+                      "descending branch.");
     prm.declare_entry("Load control at a limit point",
                       "arclength",
                       Patterns::Selection("arclength|stop"),
@@ -79,6 +100,9 @@ namespace softopt
     maximum_steps        = prm.get_integer("Maximum number of steps");
     arclength_past_limit_points =
       prm.get("Load control at a limit point") == "arclength";
+    maximum_turning_angle =
+      prm.get_double("Arclength maximum turning angle") * M_PI / 180.;
+    maximum_state_change = prm.get_double("Arclength maximum state change");
 
     AssertThrow(minimum_increment <= initial_increment,
                 ExcMessage(input.where("Loading", "Minimum load increment") +
@@ -124,9 +148,14 @@ namespace softopt
     const auto size_of = [&](const double load_increment) {
       return arclength ? arclength->arclength_of(load_increment) : load_increment;
     };
-    double       size        = size_of(parameters.initial_increment);
+    double size = size_of(parameters.initial_increment);
+    if (arclength)
+      size = std::min(size,
+                      arclength->arclength_of_state_change(
+                        parameters.maximum_state_change));
     unsigned int next_target = 0;
     unsigned int failures    = 0; // of steps from the current point
+    unsigned int arclength_failures = 0; // failed or redone arclength steps from it
 
     for (unsigned int step = 1; result.stop_reason.empty(); ++step)
       {
@@ -141,23 +170,47 @@ namespace softopt
         // Propose the next point; a step that crosses the target is redone
         // with load control from the last converged point, so that it lands
         // on the target exactly.
-        Point next;
-        bool  lands = false;
+        Point  next;
+        bool   lands   = false;
+        double control = 1.5; // how the arclength may change (step_control)
         try
           {
             if (arclength)
               {
+                // After a failed or redone step from this point, the
+                // tangent predictor: the secant through a long last step
+                // can miss a sharp bend by an angle no shorter step
+                // reduces.
                 next = arclength->step(current,
                                        has_previous ? &previous : nullptr,
-                                       size);
+                                       size,
+                                       arclength_failures > 0);
+                control = step_control(next);
+                if (control < 0.5)
+                  {
+                    // Turned or moved more than twice as far as allowed.
+                    size *= std::max(0.2, 0.9 * control);
+                    ++arclength_failures;
+                    log << "    step " << step << " from load factor "
+                        << current.load_factor << " turned "
+                        << next.turning_angle * 180 / M_PI
+                        << " degrees, changed the state by "
+                        << next.state_change
+                        << " |u_f^0|: redone shorter" << std::endl;
+                    --step;
+                    continue;
+                  }
                 lands = current.load_factor < target &&
                         next.load_factor >= target;
                 if (lands)
-                  next = load_controlled_step(problem,
-                                              newton,
-                                              current,
-                                              &next,
-                                              target);
+                  {
+                    next = load_controlled_step(problem,
+                                                newton,
+                                                current,
+                                                &next,
+                                                target);
+                    next.load_rate = 1; // crossed upwards, first crossing
+                  }
               }
             else
               {
@@ -173,6 +226,8 @@ namespace softopt
         catch (const StepFailure &failure)
           {
             size /= 2;
+            if (arclength)
+              ++arclength_failures;
             log << "    step " << step << " failed from load factor "
                 << current.load_factor << ": " << failure.what()
                 << "; halving the step" << std::endl;
@@ -199,28 +254,50 @@ namespace softopt
               {
                 std::ostringstream reason;
                 reason << "the load step could not be solved above load "
-                       << "factor " << current.load_factor
-                       << " (the last converged one) even with the minimum "
+                       << "factor " << current.load_factor;
+                if (parameters.full_load_kPa > 0)
+                  reason << " (" << current.load_factor * parameters.full_load_kPa
+                         << " kPa)";
+                reason << ", the last converged one, even with the minimum "
                        << (arclength ? "arclength" : "load increment")
-                       << ": " << failure.what()
                        << (arclength || parameters.arclength_past_limit_points ?
                              "" :
                              ". If the pressure has a maximum there (a limit "
                              "point), set \"Load control at a limit point = "
-                             "arclength\" or \"Path following = arclength\"");
+                             "arclength\" or \"Path following = arclength\"")
+                       << ". The last attempt: " << failure.what();
                 result.stop_reason = reason.str();
                 result.failed      = true;
               }
             continue;
           }
-        failures = 0;
+        failures           = 0;
+        arclength_failures = 0;
 
         // Grow the step when Newton converges fast, shrink it when not; a
         // step shortened to land on a target does not shrink the next one.
-        if (next.iterations <= 3)
-          size = std::min(size_of(parameters.maximum_increment), 1.5 * size);
-        else if (next.iterations >= 7)
-          size = std::max(size_of(parameters.minimum_increment), 0.7 * size);
+        // An arclength step also adapts to how the path bends.
+        double factor = next.iterations <= 3 ? 1.5 : next.iterations >= 7 ? 0.7 : 1.;
+        factor = std::min(factor, control);
+        size   = std::clamp(size * factor,
+                          size_of(parameters.minimum_increment),
+                          size_of(parameters.maximum_increment));
+
+        // The load rate changed sign between the two points: a limit point
+        // lies between them, located and reported before the next point.
+        if (arclength && (current.load_rate > 0) != (next.load_rate > 0))
+          {
+            const Point limit = locate_limit_point(*arclength, current, next, log);
+            result.limit_load_factors.push_back(limit.load_factor);
+            PathPoint point{step++, limit.load_factor, limit.iterations,
+                            limit.residual_norm, false, true};
+            result.stop_reason = observer(point, limit.a);
+            if (!result.stop_reason.empty())
+              {
+                result.last = point;
+                break;
+              }
+          }
 
         previous     = std::move(current);
         current      = std::move(next);
@@ -251,6 +328,74 @@ namespace softopt
           result.stop_reason = "reached the last target load factor";
       }
     return result;
+  }
+
+
+
+  double
+  PathFollowing::step_control(const Arclength::Point &next) const
+  {
+    double control = 1.5;
+    if (next.turning_angle > 0)
+      control = std::min(control, parameters.maximum_turning_angle / next.turning_angle);
+    if (next.state_change > 0)
+      control = std::min(control, parameters.maximum_state_change / next.state_change);
+    return control;
+  }
+
+
+
+  Arclength::Point
+  PathFollowing::locate_limit_point(const Arclength          &arclength,
+                                    const Arclength::Point   &from,
+                                    const Arclength::Point   &to,
+                                    const ConditionalOStream &log)
+  {
+    // The load rate is a smooth function of the distance from @p from along
+    // the path, of opposite signs at both ends: Illinois' regula falsi
+    // brackets its zero. Where the load is extremal its error enters the
+    // load factor only quadratically.
+    const double chord = arclength.distance(from, to);
+    double       lo = 0, hi = chord, g_lo = from.load_rate, g_hi = to.load_rate;
+    Arclength::Point best = std::abs(g_lo) < std::abs(g_hi) ? from : to;
+    int          side = 0; // which end moved last
+    for (unsigned int evaluation = 0; evaluation < 20; ++evaluation)
+      {
+        const double alpha = (lo * g_hi - hi * g_lo) / (g_hi - g_lo);
+        Arclength::Point point;
+        try
+          {
+            point = arclength.step_towards(from, to, alpha);
+          }
+        catch (const StepFailure &failure)
+          {
+            log << "    locating the limit point: " << failure.what() << std::endl;
+            break;
+          }
+        if (std::abs(point.load_rate) < std::abs(best.load_rate))
+          best = point;
+        if (std::abs(point.load_rate) < 1e-7 || hi - lo < 1e-9 * chord)
+          break;
+        if ((point.load_rate > 0) == (g_lo > 0))
+          {
+            lo   = alpha;
+            g_lo = point.load_rate;
+            if (side == -1)
+              g_hi /= 2;
+            side = -1;
+          }
+        else
+          {
+            hi   = alpha;
+            g_hi = point.load_rate;
+            if (side == 1)
+              g_lo /= 2;
+            side = 1;
+          }
+      }
+    log << "    limit point at load factor " << best.load_factor << " (load rate "
+        << best.load_rate << ")" << std::endl;
+    return best;
   }
 
 

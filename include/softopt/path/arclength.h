@@ -20,6 +20,12 @@ namespace softopt
    * factorization; Crisfield's quadratic gives dlambda, and of its two
    * roots the one whose new increment makes the smaller angle with the
    * current one is taken.
+   *
+   * Each converged point also carries what step control and the location
+   * of limit points need (doc/theory.md, "Step control"): the angle by
+   * which the step turned away from its predictor, the change of the state
+   * relative to the linear response, and the sign-carrying load rate
+   * d lambda / ds of the path there, which vanishes at a limit point.
    */
   class Arclength
   {
@@ -39,6 +45,11 @@ namespace softopt
     double
     arclength_of(const double load_increment) const;
 
+    /** The arclength of a step along the initial linear response whose
+     * displacement change is @p state_change times |u_f^0|. */
+    double
+    arclength_of_state_change(const double state_change) const;
+
     /** A converged point. */
     struct Point
     {
@@ -46,22 +57,64 @@ namespace softopt
       double       load_factor = 0;
       unsigned int iterations  = 0;
       double       residual_norm = 0;
+      /** The load component of the unit tangent, oriented along the path,
+       * in units of the displacement per load factor at rest:
+       * (d lambda / ds) / sqrt(1 + |da_f|^2 / |u_f^0|^2) with
+       * K da_f = -P here. 1/sqrt(2) at rest, 0 at a limit point, negative
+       * where the load falls along the path. */
+      double load_rate = 1;
+      /** The angle (radians) between the step's predictor and its
+       * converged increment: about the curvature of the path times the
+       * arclength. */
+      double turning_angle = 0;
+      /** |Delta u| / |u_f^0| of the step. */
+      double state_change = 0;
     };
 
     /**
      * The next point at arclength @p alpha from the converged @p current.
      * With a @p previous converged point the predictor is the secant through
      * both (it carries the path through limit points); without, it is the
-     * tangent, in the direction of increasing lambda. Throws StepFailure if
-     * Newton fails or the constraint has no real root.
+     * tangent, in the direction of increasing lambda. With @p tangent the
+     * predictor is the tangent at @p current also after the first step,
+     * oriented along the secant (one factorization more): past a fold
+     * sharper than the last step the secant points away from the path,
+     * the tangent does not. Throws StepFailure if
+     * Newton fails.
      */
     Point
-    step(const Point &current, const Point *previous, const double alpha) const;
+    step(const Point &current,
+         const Point *previous,
+         const double alpha,
+         const bool   tangent = false) const;
+
+    /** The point at arclength @p alpha from @p current, predicted along the
+     * chord from @p current to @p towards (a point of the path ahead). */
+    Point
+    step_towards(const Point &current, const Point &towards, const double alpha) const;
+
+    /** The distance of two states in the arclength metric. */
+    double
+    distance(const Point &from, const Point &to) const;
 
   private:
+    /** Crisfield's corrector from the predicted point @p next, the
+     * increment (Du, Dl) of arclength alpha from @p current; checks that
+     * the step does not turn back if @p secant. */
+    Point
+    correct(const Point &current,
+            Point        next,
+            Vector       Du,
+            double       Dl,
+            const double alpha,
+            const bool   secant) const;
+
+
     EquilibriumProblem &problem;
     const NewtonSolver &newton;
     double              psi_squared;
+    /** |u_f^0|^2: the linear response at rest, per unit load factor. */
+    double              linear_norm_squared;
     double              initial_load_norm;
   };
 } // namespace softopt

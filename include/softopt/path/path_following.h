@@ -9,6 +9,7 @@
 #include <softopt/path/equilibrium_problem.h>
 #include <softopt/path/newton_solver.h>
 
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -49,11 +50,19 @@ namespace softopt
       double       minimum_increment  = 1e-4;
       double       maximum_increment  = 1.;
       unsigned int maximum_steps      = 200;
+      /** Arclength step control: the largest angle (radians) between a
+       * step's predictor and its converged increment, and the largest
+       * change of the displacement per step relative to the linear
+       * response at rest to the full load, |Delta u| / |u_f^0|. */
+      double maximum_turning_angle = 10 * M_PI / 180;
+      double maximum_state_change  = 0.25;
       /** Load control that cannot go on (three failed steps from one
        * converged point past the first) follows the rest of the path with
        * arclength: through a limit point, onto the branch that a part
        * inflated from rest snaps to. False: it stops there. */
       bool arclength_past_limit_points = true;
+      /** The pressure (kPa) at load factor 1, for messages only (0: none). */
+      double full_load_kPa = 0;
     };
 
     /** With the default parameters (load control, one step). */
@@ -69,6 +78,9 @@ namespace softopt
       unsigned int newton_iterations = 0;
       double       residual_norm     = 0;
       bool         at_target         = false;
+      /** A limit point of the load (d lambda / ds = 0) located between two
+       * steps of an arclength path. */
+      bool limit_point = false;
     };
 
     /**
@@ -90,6 +102,8 @@ namespace softopt
       PathPoint last;
       /** Where load control handed over to arclength (negative: never). */
       double arclength_from = -1;
+      /** The load factors of the limit points located, in path order. */
+      std::vector<double> limit_load_factors;
       /** Converged states at the targets reached, in order. */
       std::vector<double>                     target_load_factors;
       std::vector<EquilibriumProblem::Vector> target_states;
@@ -108,6 +122,20 @@ namespace softopt
 
   private:
     const Parameters parameters;
+
+    /** How much shorter than @p next's arclength the steps should be
+     * (< 1) or may be (> 1) for the turning angle and state change. */
+    double
+    step_control(const Arclength::Point &next) const;
+
+    /** The limit point between @p from and @p to, converged points of an
+     * arclength path whose load rates differ in sign: the zero of the load
+     * rate along the chord by regula falsi (Illinois). */
+    static Arclength::Point
+    locate_limit_point(const Arclength          &arclength,
+                       const Arclength::Point   &from,
+                       const Arclength::Point   &to,
+                       const ConditionalOStream &log);
 
     /** Newton at fixed @p load_factor from @p current, predicted along the
      * line from @p current through @p guide (if given). */
