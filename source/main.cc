@@ -25,6 +25,8 @@ namespace
     "  softopt optimize CASE.prm         the design loop, then design.stl and the\n"
     "                                    final design's load path\n"
     "  softopt optimize CASE.prm --restart  continue from the last checkpoint\n"
+    "  softopt optimize CASE.prm --start-over  remove an earlier run's\n"
+    "                                    checkpoint and history, then start\n"
     "  softopt check-gradients CASE.prm  adjoint gradients against finite differences\n"
     "  softopt CASE.prm                  run the prm file's \"Command\"\n"
     "  softopt print-parameters          every entry, with its default and "
@@ -50,9 +52,13 @@ main(int argc, char **argv)
   const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   // --restart may stand anywhere after the command.
   std::vector<std::string> args(argv + 1, argv + argc);
-  const bool restart =
-    std::find(args.begin(), args.end(), "--restart") != args.end();
-  args.erase(std::remove(args.begin(), args.end(), "--restart"), args.end());
+  const auto flag = [&args](const std::string &name) {
+    const bool given = std::find(args.begin(), args.end(), name) != args.end();
+    args.erase(std::remove(args.begin(), args.end(), name), args.end());
+    return given;
+  };
+  const bool restart    = flag("--restart");
+  const bool start_over = flag("--start-over");
 
   try
     {
@@ -78,7 +84,7 @@ main(int argc, char **argv)
           AssertThrow(args.size() == 2,
                       dealii::ExcMessage(std::string("\"softopt optimize\" needs "
                                                      "one parameter file and "
-                                                     "optionally --restart.\n") +
+                                                     "optionally --restart or --start-over.\n") +
                                          usage));
           command = args[0];
           file    = args[1];
@@ -106,12 +112,20 @@ main(int argc, char **argv)
         command = settings.command;
       if (command == "check-gradients")
         return softopt::run_gradient_check(settings, MPI_COMM_WORLD);
-      AssertThrow(!restart || command == "optimize",
-                  dealii::ExcMessage("--restart continues \"optimize\" only, "
+      AssertThrow((!restart && !start_over) || command == "optimize",
+                  dealii::ExcMessage(std::string(restart ? "--restart" : "--start-over") +
+                                     " applies to \"optimize\" only, "
                                      "but the command is \"" + command +
                                      "\".\n" + usage));
+      AssertThrow(!(restart && start_over),
+                  dealii::ExcMessage(std::string("--restart and --start-over exclude each other.\n") +
+                                     usage));
       if (command == "optimize")
-        return softopt::run_optimization(settings, restart, MPI_COMM_WORLD);
+        return softopt::run_optimization(settings,
+                                         restart    ? softopt::Start::restart :
+                                         start_over ? softopt::Start::start_over :
+                                                      softopt::Start::fresh,
+                                         MPI_COMM_WORLD);
       return softopt::run_analysis(settings, MPI_COMM_WORLD);
     }
   catch (const dealii::ExceptionBase &e)

@@ -4,6 +4,7 @@
 #include <softopt/app/analysis.h>
 #include <softopt/app/optimization.h>
 #include <softopt/io/output_directory.h>
+#include <softopt/io/parameter_differences.h>
 #include <softopt/base/subprocess.h>
 #include <softopt/io/stl_writer.h>
 #include <softopt/io/tracked_points.h>
@@ -51,13 +52,75 @@ namespace softopt
       if (status != 0)
         pcout << "Plotting failed: " << command_line(command) << std::endl;
     }
+
+
+
+    /**
+     * A fresh run does not go on from, or mix its rows into, an earlier
+     * run's results in its folder; --start-over removes them first. A
+     * restart continues the same problem: every entry but those that only
+     * say how long to run and what to write must be as the run that wrote
+     * parameters.prm had it.
+     */
+    void
+    check_earlier_run(const Settings        &settings,
+                      const OutputDirectory &out,
+                      const Start            start,
+                      const MPI_Comm         comm)
+    {
+      namespace fs = std::filesystem;
+      const std::string checkpoint = Checkpoint::directory(out.path());
+      const std::string file       = settings.input->path();
+      std::string       error;
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          const bool earlier = fs::exists(checkpoint) || fs::exists(checkpoint + ".old") ||
+                               fs::exists(out.file("history.csv"));
+          if (start == Start::fresh && earlier)
+            error = "The output directory <" + out.path() + "> holds an "
+                    "earlier run (history.csv or checkpoint/). Continue it "
+                    "with \"softopt optimize " + file + " --restart\", start "
+                    "over with \"softopt optimize " + file + " --start-over\" "
+                    "(which first removes its checkpoint, history.csv, "
+                    "stop_reason.txt and final_analysis/), or set another "
+                    "\"Output directory\".";
+          else if (start == Start::start_over)
+            for (const auto *name : {"checkpoint", "checkpoint.old", "history.csv",
+                                     "stop_reason.txt", "final_analysis"})
+              fs::remove_all(out.file(name));
+          else if (start == Start::restart && fs::exists(out.file("parameters.prm")))
+            {
+              // What may change: how far to run, how often to save and
+              // write, what to print, and the final analysis's steps.
+              const auto differences = parameter_differences(
+                out.file("parameters.prm"),
+                settings.prm,
+                {"Command", "Output directory", "Print timings", "Output/*",
+                 "Optimization/Maximum iterations", "Optimization/Checkpoint interval",
+                 "Optimization/Output interval", "Optimization/Final analysis steps"});
+              if (!differences.empty())
+                {
+                  error = file + ": --restart continues the run in <" + out.path() +
+                          "> with the same problem, but these entries differ "
+                          "from its parameters.prm:";
+                  for (const auto &d : differences)
+                    error += "\n  " + d;
+                  error += "\nRestore them, or start over with \"softopt optimize " +
+                           file + " --start-over\".";
+                }
+            }
+        }
+      error = Utilities::MPI::broadcast(comm, error, 0);
+      AssertThrow(error.empty(), ExcMessage(error));
+    }
   } // namespace
 
 
 
   int
-  run_optimization(const Settings &settings, const bool restart, const MPI_Comm comm)
+  run_optimization(const Settings &settings, const Start start, const MPI_Comm comm)
   {
+    const bool restart = start == Start::restart;
     ConditionalOStream pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0);
     Timer timer;
     const auto &functionals = settings.functionals;
@@ -85,9 +148,11 @@ namespace softopt
                     settings.output.tracked_points)
         .print(pcout);
 
-    // Input is checked: only now touch the output directory.
+    // Input is checked: only now touch the output directory, which this
+    // run then owns (a lock), and which holds no other run's results.
     const OutputDirectory out(settings.output_directory, comm);
-    if (!restart)
+    check_earlier_run(settings, out, start, comm);
+    if (start != Start::restart)
       out.write_parameters(settings.prm);
     ShapeOptimizer     optimizer(settings.optimization, settings.output, problem, out);
     const std::string  reason = optimizer.run(restart);

@@ -2,6 +2,12 @@
 
 #include <softopt/io/output_directory.h>
 
+#include <fcntl.h>
+#include <sys/file.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -18,12 +24,56 @@ namespace softopt
         std::error_code code;
         std::filesystem::create_directories(directory, code);
         if (code)
-          error = code.message();
+          error = "Cannot create the output directory <" + directory +
+                  ">: " + code.message();
+        else
+          error = acquire_lock();
       }
     error = dealii::Utilities::MPI::broadcast(comm, error, 0);
-    AssertThrow(error.empty(),
-                dealii::ExcMessage("Cannot create the output directory <" +
-                                   directory + ">: " + error));
+    AssertThrow(error.empty(), dealii::ExcMessage(error));
+  }
+
+
+
+  OutputDirectory::~OutputDirectory()
+  {
+    if (lock >= 0)
+      ::close(lock); // releases the flock
+  }
+
+
+
+  std::string
+  OutputDirectory::acquire_lock()
+  {
+    const std::string name = file("softopt.lock");
+    // Not inherited by gmsh or the plotting script, which could otherwise
+    // hold the lock after this process ends.
+    lock = ::open(name.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (lock < 0)
+      return "Cannot write into the output directory <" + directory +
+             ">: " + name + ": " + std::strerror(errno);
+    if (::flock(lock, LOCK_EX | LOCK_NB) != 0)
+      {
+        const int   reason = errno;
+        std::string holder;
+        std::getline(std::ifstream(name), holder);
+        ::close(lock);
+        lock = -1;
+        if (reason != EWOULDBLOCK)
+          return "Cannot lock " + name + ": " + std::strerror(reason);
+        return "Another softopt run (" + (holder.empty() ? "unknown" : holder) +
+               ") is writing into the output directory <" + directory +
+               ">. Wait for it to end, or set another \"Output directory\".";
+      }
+    char host[256] = "";
+    ::gethostname(host, sizeof(host) - 1);
+    const std::string holder =
+      "process " + std::to_string(::getpid()) + " on " + host + "\n";
+    if (::ftruncate(lock, 0) != 0 ||
+        ::write(lock, holder.data(), holder.size()) != ssize_t(holder.size()))
+      return "Cannot write " + name + ": " + std::strerror(errno);
+    return "";
   }
 
 

@@ -4,6 +4,7 @@
 #include <softopt/optimization/shape_optimizer.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -271,14 +272,45 @@ namespace softopt
       Checkpoint::load(out.path(), problem.hyperelastic_problem().create_vector(), x);
     problem.restore(x);
 
-    // history.csv keeps its header and the rows before the checkpoint.
+    // history.csv keeps its header and the rows before the checkpoint; a
+    // row cut short by a kill, or a blank line, is dropped.
+    std::vector<std::string> lines;
+    long                     last_row = -1;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
-        std::ifstream            in(out.file("history.csv"));
-        std::vector<std::string> lines;
+        std::ifstream in(out.file("history.csv"));
         for (std::string line; std::getline(in, line);)
-          if (lines.empty() || std::stoul(line.substr(0, line.find(','))) < k)
-            lines.push_back(line);
+          {
+            if (lines.empty())
+              {
+                lines.push_back(line);
+                continue;
+              }
+            const auto fields = std::count(line.begin(), line.end(), ',');
+            char      *end    = nullptr;
+            const long row    = std::strtol(line.c_str(), &end, 10);
+            if (end == line.c_str() || *end != ',' ||
+                fields != std::count(lines[0].begin(), lines[0].end(), ','))
+              continue;
+            last_row = std::max(last_row, row);
+            if (row < long(k))
+              lines.push_back(line);
+          }
+      }
+    last_row = Utilities::MPI::broadcast(comm, last_row, 0);
+    // A restart that would not run further would only rewrite a finished
+    // run's results.
+    AssertThrow(last_row + 1 < long(parameters.maximum_iterations),
+                ExcMessage("The run in <" + out.path() + "> has iterations up to " +
+                           std::to_string(last_row) + " (history.csv); with "
+                           "\"Maximum iterations = " +
+                           std::to_string(parameters.maximum_iterations) +
+                           "\" (subsection Optimization) a restart would not "
+                           "run further and would only rewrite its results. "
+                           "Raise Maximum iterations above " +
+                           std::to_string(last_row + 1) + " to go on."));
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
         std::ofstream rewrite(out.file("history.csv"));
         for (const auto &line : lines)
           rewrite << line << '\n';

@@ -8,11 +8,24 @@
 
 namespace softopt
 {
-  /** The output directory of a run: created (by rank 0) on construction. */
+  /**
+   * The output directory of a run: created (by rank 0) on construction and
+   * owned by the run while the object lives. Rank 0 holds an exclusive lock
+   * (flock) on `softopt.lock` in it, which names the process; a second run
+   * into the same directory stops at once with a message naming the first.
+   * The operating system releases the lock when the process ends, however
+   * it ends, so a killed run leaves no stale lock.
+   */
   class OutputDirectory
   {
   public:
     OutputDirectory(const std::string &directory, const MPI_Comm comm);
+
+    ~OutputDirectory();
+
+    OutputDirectory(const OutputDirectory &) = delete;
+    OutputDirectory &
+    operator=(const OutputDirectory &) = delete;
 
     /** The directory. */
     const std::string &
@@ -32,8 +45,14 @@ namespace softopt
     write_text(const std::string &name, const std::string &text) const;
 
   private:
+    /** Rank 0: locks softopt.lock; returns an error message or "". */
+    std::string
+    acquire_lock();
+
     std::string directory;
     MPI_Comm    comm;
+    /** The locked file's descriptor on rank 0 (-1 elsewhere). */
+    int lock = -1;
   };
 } // namespace softopt
 

@@ -1,0 +1,90 @@
+#include <softopt/io/parameter_differences.h>
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace softopt
+{
+  namespace
+  {
+    std::string
+    trim(const std::string &s)
+    {
+      const auto first = s.find_first_not_of(" \t");
+      const auto last  = s.find_last_not_of(" \t\r");
+      return first == std::string::npos ? "" : s.substr(first, last - first + 1);
+    }
+
+    /** "Subsection/Entry" -> value of a file in ParameterHandler::PRM
+     * format (comments, and the "# default: ..." deal.II appends, dropped). */
+    std::map<std::string, std::string>
+    entries(std::istream &in)
+    {
+      std::map<std::string, std::string> result;
+      std::vector<std::string>           path;
+      for (std::string line; std::getline(in, line);)
+        {
+          const std::string text = trim(line);
+          if (text.rfind("subsection ", 0) == 0)
+            path.push_back(trim(text.substr(11)));
+          else if (text == "end" && !path.empty())
+            path.pop_back();
+          else if (text.rfind("set ", 0) == 0)
+            {
+              const auto  equal = text.find('=');
+              std::string key;
+              for (const auto &s : path)
+                key += s + "/";
+              key += trim(text.substr(4, equal - 4));
+              std::string value = text.substr(equal + 1);
+              const auto  note  = value.rfind("# default:");
+              if (note != std::string::npos)
+                value = value.substr(0, note);
+              result[key] = trim(value);
+            }
+        }
+      return result;
+    }
+
+    bool
+    may_differ(const std::string &key, const std::set<std::string> &may_change)
+    {
+      if (may_change.count(key) != 0)
+        return true;
+      const auto slash = key.rfind('/');
+      return slash != std::string::npos &&
+             may_change.count(key.substr(0, slash) + "/*") != 0;
+    }
+  } // namespace
+
+
+
+  std::vector<std::string>
+  parameter_differences(const std::string              &written_file,
+                        const dealii::ParameterHandler &now,
+                        const std::set<std::string>    &may_change)
+  {
+    std::ifstream file(written_file);
+    const auto    then = entries(file);
+    std::stringstream printed;
+    now.print_parameters(printed, dealii::ParameterHandler::PRM);
+    const auto current = entries(printed);
+
+    std::vector<std::string> differences;
+    const auto               say = [](const auto &map, const std::string &key) {
+      const auto it = map.find(key);
+      return it == map.end() ? std::string("(absent)") : "\"" + it->second + "\"";
+    };
+    std::set<std::string> keys;
+    for (const auto &[key, value] : then)
+      keys.insert(key);
+    for (const auto &[key, value] : current)
+      keys.insert(key);
+    for (const auto &key : keys)
+      if (!may_differ(key, may_change) && say(then, key) != say(current, key))
+        differences.push_back(key + ": " + say(then, key) + " then, " +
+                              say(current, key) + " now");
+    return differences;
+  }
+} // namespace softopt

@@ -1,0 +1,121 @@
+#!/bin/bash
+# A run owns its folder, and a restart continues the same problem (issue 23).
+# On the coarse sphere octant (a few seconds per run):
+#   1. a fresh run into a folder holding an earlier run is refused, and the
+#      earlier history.csv is untouched;
+#   2. --restart with a changed Pressure is refused, naming the entry;
+#   3. --restart that would not run further is refused;
+#   4. --restart with more iterations goes on: rows 0..2, one of each;
+#   5. a second run into a folder while a first one writes there stops at
+#      once, naming the first run's process;
+#   6. --start-over removes the earlier run and starts at iteration 0.
+# Usage: run_folder.sh SOFTOPT_EXECUTABLE SOURCE_DIR
+softopt=$1
+source=$2
+work=$(mktemp -d)
+trap 'kill $background 2>/dev/null; rm -rf "$work"' EXIT
+cd "$work" || exit 1
+cp "$source/meshes/sphere_octant.geo" sphere.geo
+failures=0
+
+case_file() { # $1: pressure, $2: maximum iterations
+  cat <<PRM
+set Output directory = run
+set Print timings = false
+subsection Output
+  set VTU output = none
+end
+subsection Geometry
+  set Mesh file = sphere.geo
+  set Mesh size = 0.5
+  set Dirichlet boundaries = 1: x; 2: y; 3: z
+  set Pressure boundary ids = 4
+  set Design boundary ids = 5
+end
+subsection Material
+  set Young's modulus = 3
+  set Poisson's ratio = 0.49
+end
+subsection Loading
+  set Pressure = $1
+end
+subsection Optimization
+  set Maximum iterations = $2
+  set Checkpoint interval = 1
+  set Final analysis steps = 1
+  set Design bound = 0.05
+end
+subsection Objective 1
+  set Direction field = inward radial
+end
+PRM
+}
+
+expect() { # $1: probe, $2: exit code, $3: "ok" or the text the message must hold
+  if [ "$3" = ok ]; then
+    if [ "$2" -ne 0 ]; then
+      echo "FAIL $1: exit code $2 (expected 0)"; cat log; failures=$((failures + 1))
+    else
+      echo "ok   $1"
+    fi
+  elif [ "$2" -eq 0 ]; then
+    echo "FAIL $1: exit code 0 (expected a refusal)"; failures=$((failures + 1))
+  elif ! grep -qF -- "$3" log; then
+    echo "FAIL $1: the message does not contain \"$3\":"; cat log
+    failures=$((failures + 1))
+  else
+    echo "ok   $1: refused (exit code $2)"
+  fi
+}
+
+rows() { tail -n +2 run/history.csv | cut -d, -f1 | tr '\n' ' '; }
+
+case_file 100 2 > case.prm
+"$softopt" optimize case.prm > log 2>&1
+expect "first run" $? ok
+before=$(md5sum < run/history.csv)
+
+# 1. A fresh run into the folder of the first.
+"$softopt" optimize case.prm > log 2>&1
+expect "fresh run into an earlier run's folder" $? "holds an earlier run"
+if [ "$(md5sum < run/history.csv)" != "$before" ]; then
+  echo "FAIL fresh run: history.csv was changed"; failures=$((failures + 1))
+fi
+
+# 2. A restart with another pressure.
+case_file 120 3 > changed.prm
+"$softopt" optimize changed.prm --restart > log 2>&1
+expect "restart with a changed Pressure" $? 'Loading/Pressure: "100" then, "120" now'
+
+# 3. A restart that would not run further.
+"$softopt" optimize case.prm --restart > log 2>&1
+expect "restart without more iterations" $? "would not run further"
+
+# 4. A restart with one iteration more.
+case_file 100 3 > longer.prm
+"$softopt" optimize longer.prm --restart > log 2>&1
+expect "restart with more iterations" $? ok
+if [ "$(rows)" != "0 1 2 " ]; then
+  echo "FAIL restart: history.csv has rows $(rows)(expected 0 1 2)"; failures=$((failures + 1))
+fi
+
+# 5. Two runs into one folder at once.
+case_file 100 30 > long.prm
+"$softopt" optimize long.prm --start-over > background.log 2>&1 &
+background=$!
+for _ in $(seq 50); do
+  grep -q "^iteration" background.log 2>/dev/null && break
+  sleep 0.2
+done
+"$softopt" optimize long.prm --restart > log 2>&1
+expect "second run while the first writes" $? "Another softopt run (process $background"
+kill $background 2>/dev/null
+wait $background 2>/dev/null
+
+# 6. Start over.
+"$softopt" optimize case.prm --start-over > log 2>&1
+expect "start over" $? ok
+if [ "$(rows)" != "0 1 " ]; then
+  echo "FAIL start over: history.csv has rows $(rows)(expected 0 1)"; failures=$((failures + 1))
+fi
+exit $failures
