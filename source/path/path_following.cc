@@ -232,8 +232,12 @@ namespace softopt
                 << current.load_factor << ": " << failure.what()
                 << "; halving the step" << std::endl;
             --step;
+            // Three failures in a row, or steps that converge ever shorter
+            // until below the minimum increment (each success resets the
+            // count): load control cannot go on.
             if (!arclength && parameters.arclength_past_limit_points &&
-                has_previous && ++failures == 3)
+                has_previous &&
+                (++failures == 3 || size < parameters.minimum_increment))
               {
                 // Load control cannot pass a limit point: arclength, scaled
                 // by the linear response at rest as from the start, goes on
