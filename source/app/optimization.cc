@@ -74,21 +74,27 @@ namespace softopt
       std::string       error;
       if (Utilities::MPI::this_mpi_process(comm) == 0)
         {
-          const bool earlier = fs::exists(checkpoint) || fs::exists(checkpoint + ".old") ||
-                               fs::exists(out.file("history.csv"));
+          // error_code overloads: nothing may throw on rank 0 alone.
+          std::error_code code;
+          const bool      earlier = fs::exists(checkpoint, code) ||
+                               fs::exists(checkpoint + ".old", code) ||
+                               fs::exists(out.file("history.csv"), code);
           if (start == Start::fresh && earlier)
             error = "The output directory <" + out.path() + "> holds an "
                     "earlier run (history.csv or checkpoint/). Continue it "
                     "with \"softopt optimize " + file + " --restart\", start "
                     "over with \"softopt optimize " + file + " --start-over\" "
                     "(which first removes its checkpoint, history.csv, "
-                    "stop_reason.txt and final_analysis/), or set another "
+                    "stop_reason.txt, design.stl and final_analysis/), or set another "
                     "\"Output directory\".";
           else if (start == Start::start_over)
-            for (const auto *name : {"checkpoint", "checkpoint.old", "history.csv",
-                                     "stop_reason.txt", "final_analysis"})
-              fs::remove_all(out.file(name));
-          else if (start == Start::restart && fs::exists(out.file("parameters.prm")))
+            {
+              for (const auto *name : {"checkpoint", "checkpoint.old", "history.csv",
+                                       "stop_reason.txt", "final_analysis", "design.stl"})
+                if (fs::remove_all(out.file(name), code) == std::uintmax_t(-1))
+                  error = "Cannot remove " + out.file(name) + ": " + code.message();
+            }
+          else if (start == Start::restart && fs::exists(out.file("parameters.prm"), code))
             {
               // What may change: how far to run, how often to save and
               // write, what to print, and the final analysis's steps.

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 
 namespace softopt
 {
@@ -60,6 +61,14 @@ namespace softopt
         std::getline(std::ifstream(name), holder);
         ::close(lock);
         lock = -1;
+        // A file system without locks (some cluster mounts): no lock.
+        if (reason == ENOSYS || reason == EOPNOTSUPP || reason == ENOLCK)
+          {
+            std::cerr << "Warning: " << name << " cannot be locked ("
+                      << std::strerror(reason) << "): nothing stops a second "
+                      << "run into this directory." << std::endl;
+            return "";
+          }
         if (reason != EWOULDBLOCK)
           return "Cannot lock " + name + ": " + std::strerror(reason);
         return "Another softopt run (" + (holder.empty() ? "unknown" : holder) +

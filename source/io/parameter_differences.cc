@@ -81,8 +81,11 @@ namespace softopt
       keys.insert(key);
     for (const auto &[key, value] : current)
       keys.insert(key);
+    // An entry the run's program did not have yet is not compared: it has
+    // its default now, as the older program behaved.
     for (const auto &key : keys)
-      if (!may_differ(key, may_change) && say(then, key) != say(current, key))
+      if (!may_differ(key, may_change) && then.count(key) != 0 &&
+          say(then, key) != say(current, key))
         differences.push_back(key + ": " + say(then, key) + " then, " +
                               say(current, key) + " now");
     return differences;

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -297,10 +298,17 @@ namespace softopt
               lines.push_back(line);
           }
       }
-    last_row = Utilities::MPI::broadcast(comm, last_row, 0);
     // A restart that would not run further would only rewrite a finished
-    // run's results.
-    AssertThrow(last_row + 1 < long(parameters.maximum_iterations),
+    // run's results (a run killed in its final analysis is not finished).
+    bool finished = false;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      {
+        std::error_code code;
+        finished = std::filesystem::exists(out.file("final_analysis/stop_reason.txt"), code);
+      }
+    last_row = Utilities::MPI::broadcast(comm, last_row, 0);
+    finished = Utilities::MPI::broadcast(comm, finished, 0);
+    AssertThrow(!finished || last_row + 1 < long(parameters.maximum_iterations),
                 ExcMessage("The run in <" + out.path() + "> has iterations up to " +
                            std::to_string(last_row) + " (history.csv); with "
                            "\"Maximum iterations = " +

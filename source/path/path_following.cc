@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <sstream>
 
 namespace softopt
@@ -186,10 +187,20 @@ namespace softopt
                                        size,
                                        arclength_failures > 0);
                 control = step_control(next);
-                if (control < 0.5)
+                lands   = current.load_factor < target &&
+                        next.load_factor >= target;
+                // Turned or moved more than twice as far as allowed, or
+                // crossed the target past a maximum of the load (landing
+                // would start Newton beyond the fold): shorter, unless
+                // that falls below the minimum arclength.
+                const double shorter =
+                  control < 0.5           ? std::max(0.2, 0.9 * control) :
+                  lands && next.load_rate <= 0 ? 0.5 :
+                                                 1.;
+                if (shorter < 1 &&
+                    size * shorter >= size_of(parameters.minimum_increment))
                   {
-                    // Turned or moved more than twice as far as allowed.
-                    size *= std::max(0.2, 0.9 * control);
+                    size *= shorter;
                     ++arclength_failures;
                     log << "    step " << step << " from load factor "
                         << current.load_factor << " turned "
@@ -200,8 +211,6 @@ namespace softopt
                     --step;
                     continue;
                   }
-                lands = current.load_factor < target &&
-                        next.load_factor >= target;
                 if (lands)
                   {
                     next = load_controlled_step(problem,
@@ -291,15 +300,18 @@ namespace softopt
         // lies between them, located and reported before the next point.
         if (arclength && (current.load_rate > 0) != (next.load_rate > 0))
           {
-            const Point limit = locate_limit_point(*arclength, current, next, log);
-            result.limit_load_factors.push_back(limit.load_factor);
-            PathPoint point{step++, limit.load_factor, limit.iterations,
-                            limit.residual_norm, false, true};
-            result.stop_reason = observer(point, limit.a);
-            if (!result.stop_reason.empty())
+            // (Not reported if not one point between them converged.)
+            if (const auto limit = locate_limit_point(*arclength, current, next, log))
               {
-                result.last = point;
-                break;
+                result.limit_load_factors.push_back(limit->load_factor);
+                PathPoint point{step++, limit->load_factor, limit->iterations,
+                                limit->residual_norm, false, true};
+                result.stop_reason = observer(point, limit->a);
+                if (!result.stop_reason.empty())
+                  {
+                    result.last = point;
+                    break;
+                  }
               }
           }
 
@@ -349,7 +361,7 @@ namespace softopt
 
 
 
-  Arclength::Point
+  std::optional<Arclength::Point>
   PathFollowing::locate_limit_point(const Arclength          &arclength,
                                     const Arclength::Point   &from,
                                     const Arclength::Point   &to,
@@ -361,7 +373,7 @@ namespace softopt
     // load factor only quadratically.
     const double chord = arclength.distance(from, to);
     double       lo = 0, hi = chord, g_lo = from.load_rate, g_hi = to.load_rate;
-    Arclength::Point best = std::abs(g_lo) < std::abs(g_hi) ? from : to;
+    std::optional<Arclength::Point> best;
     int          side = 0; // which end moved last
     for (unsigned int evaluation = 0; evaluation < 20; ++evaluation)
       {
@@ -376,7 +388,7 @@ namespace softopt
             log << "    locating the limit point: " << failure.what() << std::endl;
             break;
           }
-        if (std::abs(point.load_rate) < std::abs(best.load_rate))
+        if (!best || std::abs(point.load_rate) < std::abs(best->load_rate))
           best = point;
         if (std::abs(point.load_rate) < 1e-7 || hi - lo < 1e-9 * chord)
           break;
@@ -397,8 +409,9 @@ namespace softopt
             side = 1;
           }
       }
-    log << "    limit point at load factor " << best.load_factor << " (load rate "
-        << best.load_rate << ")" << std::endl;
+    if (best)
+      log << "    limit point at load factor " << best->load_factor
+          << " (load rate " << best->load_rate << ")" << std::endl;
     return best;
   }
 

@@ -14,8 +14,9 @@ namespace softopt
    * wrote (parameters.prm, every entry as used: OutputDirectory::
    * write_parameters) and @p now, each as "Subsection/Entry: <then> then,
    * <now> now"; entries named in @p may_change ("Subsection/Entry", or
-   * "Subsection/" followed by a star for a whole subsection) are not compared. An entry in
-   * only one of them counts as different.
+   * "Subsection/" followed by a star for a whole subsection) are not
+   * compared, nor entries the written file lacks (declared since; values
+   * are compared as text).
    */
   std::vector<std::string>
   parameter_differences(const std::string                &written_file,

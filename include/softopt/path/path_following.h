@@ -11,6 +11,7 @@
 
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -130,8 +131,9 @@ namespace softopt
 
     /** The limit point between @p from and @p to, converged points of an
      * arclength path whose load rates differ in sign: the zero of the load
-     * rate along the chord by regula falsi (Illinois). */
-    static Arclength::Point
+     * rate along the chord by regula falsi (Illinois); none if no point
+     * between them converged. */
+    static std::optional<Arclength::Point>
     locate_limit_point(const Arclength          &arclength,
                        const Arclength::Point   &from,
                        const Arclength::Point   &to,
