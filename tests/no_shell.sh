@@ -18,38 +18,9 @@ failures=0
 
 # The sphere octant's geometry beside the parameter files.
 cp "$source/meshes/sphere_octant.geo" sphere.geo
+source "$source/tests/sphere_case.sh"
 common() { # $1: mesh file, $2: output directory, $3: mesh parameters
-  cat <<PRM
-set Output directory = $2
-set Print timings = false
-subsection Output
-  set VTU output = none
-end
-subsection Geometry
-  set Mesh file = $1
-  set Mesh size = 0.5
-  set Mesh parameters = $3
-  set Dirichlet boundaries = 1: x; 2: y; 3: z
-  set Pressure boundary ids = 4
-  set Design boundary ids = 5
-end
-subsection Material
-  set Young's modulus = 3
-  set Poisson's ratio = 0.49
-end
-subsection Loading
-  set Pressure = 100
-end
-subsection Optimization
-  set Maximum iterations = 1
-  set Checkpoint interval = 0
-  set Final analysis steps = 1
-  set Design bound = 0.05
-end
-subsection Objective 1
-  set Direction field = inward radial
-end
-PRM
+  sphere_case "$1" "$2" "$3" 100 1 0
 }
 
 check() { # $1: probe name, $2: planted file, $3: exit code, $4: expected ("ok" or "refused")

@@ -18,37 +18,9 @@ cd "$work" || exit 1
 cp "$source/meshes/sphere_octant.geo" sphere.geo
 failures=0
 
+source "$source/tests/sphere_case.sh"
 case_file() { # $1: pressure, $2: maximum iterations
-  cat <<PRM
-set Output directory = run
-set Print timings = false
-subsection Output
-  set VTU output = none
-end
-subsection Geometry
-  set Mesh file = sphere.geo
-  set Mesh size = 0.5
-  set Dirichlet boundaries = 1: x; 2: y; 3: z
-  set Pressure boundary ids = 4
-  set Design boundary ids = 5
-end
-subsection Material
-  set Young's modulus = 3
-  set Poisson's ratio = 0.49
-end
-subsection Loading
-  set Pressure = $1
-end
-subsection Optimization
-  set Maximum iterations = $2
-  set Checkpoint interval = 1
-  set Final analysis steps = 1
-  set Design bound = 0.05
-end
-subsection Objective 1
-  set Direction field = inward radial
-end
-PRM
+  sphere_case sphere.geo run "" "$1" "$2" 1
 }
 
 expect() { # $1: probe, $2: exit code, $3: "ok" or the text the message must hold
