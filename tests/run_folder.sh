@@ -5,10 +5,12 @@
 #      earlier history.csv is untouched;
 #   2. --restart with a changed Pressure is refused, naming the entry;
 #   3. --restart that would not run further is refused;
-#   4. --restart with more iterations goes on: rows 0..2, one of each;
+#   4. --restart with more iterations (and the pressure written another way)
+#      goes on: rows 0..2, one of each;
 #   5. a second run into a folder while a first one writes there stops at
 #      once, naming the first run's process;
-#   6. --start-over removes the earlier run and starts at iteration 0.
+#   6. --start-over removes the earlier run and starts at iteration 0;
+#   7. after a restart, design.pvd lists the snapshots from before it too.
 # Usage: run_folder.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
@@ -63,8 +65,9 @@ expect "restart with a changed Pressure" $? 'Loading/Pressure: "100" then, "120"
 "$softopt" optimize case.prm --restart > log 2>&1
 expect "restart without more iterations" $? "would not run further"
 
-# 4. A restart with one iteration more.
-case_file 100 3 > longer.prm
+# 4. A restart with one iteration more (Pressure written 100.0: the same
+#    number, so the same problem).
+case_file 100.0 3 > longer.prm
 "$softopt" optimize longer.prm --restart > log 2>&1
 expect "restart with more iterations" $? ok
 if [ "$(rows)" != "0 1 2 " ]; then
@@ -89,5 +92,20 @@ wait $background 2>/dev/null
 expect "start over" $? ok
 if [ "$(rows)" != "0 1 " ]; then
   echo "FAIL start over: history.csv has rows $(rows)(expected 0 1)"; failures=$((failures + 1))
+fi
+# 7. The design snapshots' index after a restart at iteration 2.
+case_file 100 2 | sed 's/VTU output = none/VTU output = targets/;
+  s/Maximum iterations = 2/Maximum iterations = 2\n  set Output interval = 1/' > vtu.prm
+"$softopt" optimize vtu.prm --start-over > log 2>&1
+expect "run with snapshots" $? ok
+sed 's/Maximum iterations = 2/Maximum iterations = 3/' vtu.prm > vtu3.prm
+"$softopt" optimize vtu3.prm --restart > log 2>&1
+expect "restart with snapshots" $? ok
+listed=$(grep -o 'file="design_[0-9]*.pvtu"' run/design.pvd | tr '\n' ' ')
+if [ "$listed" != 'file="design_0000.pvtu" file="design_0001.pvtu" file="design_0002.pvtu" ' ]; then
+  echo "FAIL design.pvd after the restart lists $listed(expected iterations 0, 1, 2)"
+  failures=$((failures + 1))
+else
+  echo "ok   design.pvd after the restart lists iterations 0, 1 and 2"
 fi
 exit $failures

@@ -13,6 +13,7 @@
 #include <softopt/shape/design_configuration.h>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <tuple>
@@ -126,6 +127,14 @@ namespace softopt
                    const ConditionalOStream              &pcout)
   {
     const MPI_Comm comm = problem.get_dof_handler().get_communicator();
+    // An earlier analysis's verdict goes first: a kill on the way leaves
+    // load_path.csv up to the last converged step and no stop reason.
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      for (const char *name : {"/stop_reason.txt", "/load_path_summary.csv"})
+        {
+          std::error_code error;
+          std::filesystem::remove(directory + name, error);
+        }
     HyperelasticProblem::Vector a = problem.create_vector();
     const double initial_volume   = cavity_volume(problem, design, a);
 
@@ -236,7 +245,7 @@ namespace softopt
                     comm,
                     pcout);
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      std::ofstream(directory + "/stop_reason.txt") << result.stop_reason << '\n';
+      write_whole_file(directory + "/stop_reason.txt", result.stop_reason + "\n");
     return result;
   }
 

@@ -17,6 +17,20 @@ namespace softopt
     AssertThrow(in.good(),
                 ExcMessage("Cannot read the parameter file <" + path +
                            ">: it does not exist or is not readable."));
+    // A file with nothing but blanks and comments would run the defaults'
+    // case, whose mesh is relative to the file: say what is wrong instead.
+    bool        sets_something = false;
+    std::string line;
+    while (!sets_something && std::getline(in, line))
+      {
+        const std::string text = Utilities::trim(line.substr(0, line.find('#')));
+        sets_something         = !text.empty();
+      }
+    AssertThrow(sets_something,
+                ExcMessage("The parameter file <" + path +
+                           "> is empty: it sets no entry. Start from one of "
+                           "the files in prm/ (doc/parameters.md lists every "
+                           "entry)."));
     folder = std::filesystem::absolute(path).parent_path().string();
   }
 

@@ -258,9 +258,13 @@ namespace softopt
     MPI_Barrier(comm);
     if (rank == 0)
       std::filesystem::remove(msh_file);
-    AssertThrow(error.empty(),
-                ExcMessage(where_mesh + ": cannot read the mesh <" + mesh_file +
-                           ">: " + error));
+    // Messages name the temporary copy gmsh wrote: name the user's file.
+    const std::string copy = "The mesh <" + msh_file + "> ";
+    if (error.rfind(copy, 0) == 0)
+      error = "the mesh <" + mesh_file + "> " + error.substr(copy.size());
+    else if (!error.empty())
+      error = "cannot read the mesh <" + mesh_file + ">: " + error;
+    AssertThrow(error.empty(), ExcMessage(where_mesh + ": " + error));
 
     for (const auto &cell : serial.active_cell_iterators())
       AssertThrow(cell->reference_cell() == ReferenceCells::Tetrahedron,

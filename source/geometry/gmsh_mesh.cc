@@ -1,5 +1,6 @@
 #include <deal.II/base/exceptions.h>
 
+#include <deal.II/base/tensor.h>
 #include <deal.II/base/utilities.h>
 
 #include <softopt/base/subprocess.h>
@@ -7,6 +8,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <array>
 #include <cstdlib>
 #include <iterator>
@@ -110,10 +112,9 @@ namespace softopt
           in >> n;
           for (long i = 0; i < n; ++i)
             {
-              long              id;
               GmshMesh::Element e;
               int               n_tags;
-              in >> id >> e.type >> n_tags;
+              in >> e.number >> e.type >> n_tags;
               e.tags.resize(n_tags);
               for (auto &t : e.tags)
                 in >> t;
@@ -124,7 +125,13 @@ namespace softopt
                      "triangular boundary faces.");
               e.nodes.resize(count->second);
               for (auto &v : e.nodes)
-                in >> v;
+                {
+                  in >> v;
+                  if (in && mesh.nodes.count(v) == 0)
+                    fail("has element " + std::to_string(e.number) +
+                         " with node " + std::to_string(v) +
+                         ", which is not among its $Nodes.");
+                }
               if (e.type == 2 || e.type == 4 || e.type == 9 || e.type == 11)
                 mesh.elements.push_back(std::move(e));
             }
@@ -158,6 +165,64 @@ namespace softopt
       }
     out << "$EndElements\n";
     AssertThrow(out.good(), ExcMessage("Cannot write the mesh <" + file + ">."));
+  }
+
+
+
+  void
+  check_tetrahedra(const GmshMesh &mesh, const std::string &file)
+  {
+    // The corner volume (b - a) x (c - a) . (d - a) / 6 in gmsh's node order,
+    // which deal.II keeps: positive for a valid tetrahedron. Degenerate:
+    // below 1e-10 of the cube of its longest edge (a repeated node gives 0).
+    unsigned int inverted = 0, degenerate = 0;
+    std::string  first_inverted, first_degenerate;
+    for (const auto &e : mesh.elements)
+      {
+        if (e.n_corners() != 4)
+          continue;
+        std::array<Point<3>, 4> x;
+        for (unsigned int v = 0; v < 4; ++v)
+          x[v] = mesh.nodes.at(e.nodes[v]);
+        const double volume =
+          scalar_product(cross_product_3d(x[1] - x[0], x[2] - x[0]), x[3] - x[0]) / 6;
+        double longest = 0;
+        for (unsigned int a = 0; a < 4; ++a)
+          for (unsigned int b = a + 1; b < 4; ++b)
+            longest = std::max(longest, x[a].distance(x[b]));
+        const bool is_degenerate = std::abs(volume) <= 1e-10 * std::pow(longest, 3);
+        if (!is_degenerate && volume > 0)
+          continue;
+        std::ostringstream where;
+        where << "element " << e.number << " (nodes";
+        for (unsigned int v = 0; v < 4; ++v)
+          where << " " << e.nodes[v];
+        where << ") at (" << (x[0] + x[1] + x[2] + x[3]) / 4 << "), volume "
+              << volume;
+        if (is_degenerate && degenerate++ == 0)
+          first_degenerate = where.str();
+        else if (!is_degenerate && inverted++ == 0)
+          first_inverted = where.str();
+      }
+    const auto count = [](const unsigned int n) {
+      return n == 1 ? std::string("1 tetrahedron is ") :
+                      std::to_string(n) + " tetrahedra are ";
+    };
+    std::string message;
+    if (inverted > 0)
+      message += count(inverted) +
+                 "inside out (negative volume), the first " +
+                 first_inverted +
+                 "; listing two corners of each the other way round (and "
+                 "their midside nodes to match) would fix them. ";
+    if (degenerate > 0)
+      message += count(degenerate) +
+                 "degenerate (no volume: a repeated node or "
+                 "four corners in a plane), the first " +
+                 first_degenerate + "; no reordering fixes these. ";
+    AssertThrow(message.empty(),
+                ExcMessage("The mesh <" + file + "> cannot be used: " +
+                           Utilities::trim(message)));
   }
 
 
@@ -211,6 +276,7 @@ namespace softopt
                 ExcMessage("The mesh <" + file +
                            "> holds no tetrahedra (a gmsh file without a "
                            "Physical Volume holds none)."));
+    check_tetrahedra(mesh, file);
 
     std::map<long, long> number;
     {
@@ -225,7 +291,7 @@ namespace softopt
     }
     for (const auto &e : mesh.elements)
       {
-        GmshMesh::Element corner_element{e.n_corners() == 4 ? 4 : 2, e.tags, {}};
+        GmshMesh::Element corner_element{e.number, e.n_corners() == 4 ? 4 : 2, e.tags, {}};
         for (unsigned int v = 0; v < e.n_corners(); ++v)
           corner_element.nodes.push_back(number.at(e.nodes[v]));
         linear.elements.push_back(std::move(corner_element));

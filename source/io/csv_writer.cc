@@ -2,7 +2,9 @@
 
 #include <softopt/io/csv_writer.h>
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <iomanip>
 #include <sstream>
 
@@ -14,8 +16,10 @@ namespace softopt
   {
     if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
       return;
+    name = file;
+    errno = 0;
     out.open(file);
-    AssertThrow(out.good(), dealii::ExcMessage("Cannot write <" + file + ">."));
+    AssertThrow(out.good(), dealii::ExcMessage(cannot_write()));
     add_row(columns);
   }
 
@@ -25,8 +29,10 @@ namespace softopt
   {
     if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
       return;
+    name = file;
+    errno = 0;
     out.open(file, std::ios::app);
-    AssertThrow(out.good(), dealii::ExcMessage("Cannot write <" + file + ">."));
+    AssertThrow(out.good(), dealii::ExcMessage(cannot_write()));
   }
 
 
@@ -36,9 +42,24 @@ namespace softopt
   {
     if (!out.is_open())
       return;
+    // The row in one piece, so that a kill cuts at most the row being
+    // written (which a restart drops).
+    std::string line;
     for (unsigned int i = 0; i < row.size(); ++i)
-      out << (i > 0 ? "," : "") << row[i];
-    out << std::endl;
+      line += (i > 0 ? "," : "") + row[i];
+    line += '\n';
+    errno = 0;
+    out << line << std::flush;
+    AssertThrow(out.good(), dealii::ExcMessage(cannot_write()));
+  }
+
+
+
+  std::string
+  CsvWriter::cannot_write() const
+  {
+    return "Cannot write <" + name + ">: " +
+           (errno != 0 ? std::strerror(errno) : "unknown reason") + ".";
   }
 
 

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <iostream>
 
 namespace softopt
@@ -108,8 +109,9 @@ namespace softopt
   {
     if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
       return;
-    std::ofstream out(file("parameters.prm"));
-    prm.print_parameters(out, dealii::ParameterHandler::PRM);
+    std::ostringstream text;
+    prm.print_parameters(text, dealii::ParameterHandler::PRM);
+    write_whole_file(file("parameters.prm"), text.str());
   }
 
 
@@ -120,7 +122,30 @@ namespace softopt
   {
     if (dealii::Utilities::MPI::this_mpi_process(comm) != 0)
       return;
-    std::ofstream out(file(name));
-    out << text;
+    write_whole_file(file(name), text);
+  }
+
+
+
+  void
+  write_whole_file(const std::string &name, const std::string &text)
+  {
+    // Aside, then renamed over the old one: a kill leaves either version.
+    const std::string aside = name + ".part";
+    errno                   = 0;
+    {
+      std::ofstream out(aside);
+      out << text;
+      out.flush();
+      AssertThrow(out.good(),
+                  dealii::ExcMessage("Cannot write <" + aside + ">: " +
+                                     (errno != 0 ? std::strerror(errno) :
+                                                   "unknown reason") + "."));
+    }
+    std::error_code error;
+    std::filesystem::rename(aside, name, error);
+    AssertThrow(!error,
+                dealii::ExcMessage("Cannot rename <" + aside + "> to <" + name +
+                                   ">: " + error.message() + "."));
   }
 } // namespace softopt

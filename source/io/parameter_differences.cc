@@ -1,5 +1,6 @@
 #include <softopt/io/parameter_differences.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -47,6 +48,48 @@ namespace softopt
       return result;
     }
 
+    /** The words of a value, split at blanks and the separators , ; : of
+     * lists and maps. */
+    std::vector<std::string>
+    words(const std::string &value)
+    {
+      std::vector<std::string> result(1);
+      for (const char c : value)
+        if (c == ' ' || c == '\t' || c == ',' || c == ';' || c == ':')
+          {
+            if (!result.back().empty())
+              result.emplace_back();
+            if (c != ' ' && c != '\t')
+              result.back() = std::string(1, c), result.emplace_back();
+          }
+        else
+          result.back() += c;
+      if (result.back().empty())
+        result.pop_back();
+      return result;
+    }
+
+    /** Whether two values say the same: word by word, numbers by value
+     * ("1.2" and "1.20", "0.1" and "1e-1"), the rest as text. */
+    bool
+    same_value(const std::string &a, const std::string &b)
+    {
+      const auto x = words(a), y = words(b);
+      if (x.size() != y.size())
+        return false;
+      for (unsigned int i = 0; i < x.size(); ++i)
+        {
+          char        *end_x = nullptr, *end_y = nullptr;
+          const double u = std::strtod(x[i].c_str(), &end_x);
+          const double v = std::strtod(y[i].c_str(), &end_y);
+          const bool   numbers = *end_x == '\0' && *end_y == '\0' &&
+                               end_x != x[i].c_str() && end_y != y[i].c_str();
+          if (numbers ? u != v : x[i] != y[i])
+            return false;
+        }
+      return true;
+    }
+
     bool
     may_differ(const std::string &key, const std::set<std::string> &may_change)
     {
@@ -85,7 +128,8 @@ namespace softopt
     // its default now, as the older program behaved.
     for (const auto &key : keys)
       if (!may_differ(key, may_change) && then.count(key) != 0 &&
-          say(then, key) != say(current, key))
+          (current.count(key) == 0 ||
+           !same_value(then.at(key), current.at(key))))
         differences.push_back(key + ": " + say(then, key) + " then, " +
                               say(current, key) + " now");
     return differences;

@@ -37,6 +37,7 @@ namespace softopt
     DesignIterate      x     = problem.initial_iterate();
     unsigned int       k     = restart ? resume(x) : 0;
     const unsigned int first = k;
+    first_iteration          = k;
     any_accepted             = restart; // the checkpoint's run accepted some
     if (!restart)
       {
@@ -435,8 +436,10 @@ namespace softopt
     const auto &physics = problem.hyperelastic_problem();
     const auto  add     = [&](const std::string &name, const Vector &a) {
       auto &series = snapshots[name];
-      if (!series)
-        series = std::make_unique<PvdSeries>(out.file(name + ".pvd"), comm);
+      if (!series) // a restart lists the snapshots before it, too
+        series = std::make_unique<PvdSeries>(out.file(name + ".pvd"),
+                                             comm,
+                                             double(first_iteration));
       series->add(iteration, physics.write_vtu(a, out.path(), name, iteration));
     };
     add("design", physics.create_vector());

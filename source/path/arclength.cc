@@ -138,8 +138,7 @@ namespace softopt
         const double load_norm =
           std::max(std::abs(next.load_factor) * P.l2_norm(),
                    1e-6 * initial_load_norm);
-        if (monitor.converged(iteration, norm, load_norm))
-          {
+        const auto converged = [&]() -> Point {
             // Near a sharp fold the corrector can converge to a point behind
             // the current one; the path would then trace itself backwards.
             const double along = Du * Du_0 + psi_squared * Dl * Dl_0;
@@ -165,7 +164,9 @@ namespace softopt
             next.iterations    = iteration;
             next.residual_norm = norm;
             return next;
-          }
+        };
+        if (monitor.converged(iteration, norm, load_norm))
+          return converged();
 
         problem.factorize();
         r *= -1.;
@@ -173,6 +174,11 @@ namespace softopt
         problem.solve(r, du_r);
         problem.solve(P, du_f);
         have_tangent = true;
+        // P is -P here: the work lambda P . a and the correction's energy.
+        if (monitor.negligible(iteration,
+                               std::abs(du_r * r),
+                               std::abs(next.load_factor * (P * next.a))))
+          return converged();
 
         // |Du + du_r + dl du_f|^2 + psi^2 (Dl + dl)^2 = alpha^2
         Vector v = Du;

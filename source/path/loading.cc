@@ -42,6 +42,11 @@ namespace softopt
     path.full_load_kPa = pressure_kPa;
     prm.leave_subsection();
 
+    // No load, no response: every design would be the same.
+    AssertThrow(pressure_kPa != 0,
+                ExcMessage(input.where("Loading", "Pressure") +
+                           ": the pressure must not be 0 (nothing would "
+                           "deform; a negative pressure is a vacuum)."));
     for (const double t : target_load_factors)
       AssertThrow(t > 0,
                   ExcMessage(input.where("Loading", "Target load factors") +

@@ -15,7 +15,11 @@ namespace softopt
                       Patterns::Double(1e-15, 1e-1),
                       "Newton stops when the l2 norm of the residual (N) is "
                       "below this fraction of the l2 norm of the external "
-                      "load lambda P (N).");
+                      "load lambda P (N), or when a correction is below "
+                      "round-off (its energy |da . r| under 1e-4 times the "
+                      "square of this fraction of the load's work lambda P "
+                      ". a: near incompressibility the residual stalls in "
+                      "the stiff volumetric modes).");
     prm.declare_entry("Maximum iterations",
                       "12",
                       Patterns::Integer(1, 200),
@@ -70,6 +74,24 @@ namespace softopt
 
 
 
+  bool
+  NewtonSolver::Monitor::negligible(const unsigned int iteration,
+                                    const double       correction_energy,
+                                    const double       work) const
+  {
+    // r^T K^-1 r weighs the residual by the compliance: a residual left in
+    // the stiff volumetric modes (kappa / mu = 2 (1 + nu) / (3 (1 - 2 nu)),
+    // 1.7e8 at nu = 0.49999999) moves nothing. At a residual of
+    // tolerance |lambda P| in the soft modes the ratio is about 1e-2
+    // tolerance^2 (the sphere at nu = 0.4999: 6e-19 for 1e-8); round-off
+    // stalls |r| near 4e-8 |lambda P| at nu = 0.49999999 with the ratio at
+    // 4e-24. Only after a first update: iteration 0 follows a load change.
+    return iteration > 0 && work > 0 &&
+           correction_energy <= 1e-4 * newton.tolerance * newton.tolerance * work;
+  }
+
+
+
   NewtonSolver::Result
   NewtonSolver::solve(EquilibriumProblem         &problem,
                       EquilibriumProblem::Vector &a,
@@ -91,6 +113,12 @@ namespace softopt
           problem.solve_nearby_tangent(residual, increment);
         else
           problem.solve_tangent(residual, increment);
+        // At the round-off floor the increment is noise: keep a, whose
+        // tangent is the one assembled.
+        if (monitor.negligible(iteration,
+                               std::abs(increment * residual),
+                               std::abs(load_factor * (load * a))))
+          return {iteration, norm};
         problem.update(a, increment);
       }
   }

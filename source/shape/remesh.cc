@@ -101,7 +101,7 @@ namespace softopt
       std::sort(triangles.begin(), triangles.end());
       for (const auto &[id, a, b, c] : triangles)
         // Physical and elementary tag: the boundary id.
-        mesh.elements.push_back({2, {id, id}, {a, b, c}});
+        mesh.elements.push_back({0, 2, {id, id}, {a, b, c}});
       write_gmsh_mesh(mesh, file);
       return surface;
     }

@@ -28,6 +28,8 @@ namespace softopt
   {
     struct Element
     {
+      /** gmsh's element number. */
+      long              number = 0;
       /** gmsh's type: 2, 4 (linear triangle, tetrahedron), 9, 11
        * (quadratic). */
       int               type;
@@ -49,6 +51,11 @@ namespace softopt
    * triangles and tetrahedra. */
   GmshMesh
   read_gmsh_mesh(const std::string &file);
+
+  /** Throws a message naming @p file and the first of its inside-out or
+   * degenerate (zero-volume) tetrahedra, if it has any. */
+  void
+  check_tetrahedra(const GmshMesh &mesh, const std::string &file);
 
   /** Writes @p mesh to @p file in gmsh's format 2.2 (ASCII, every digit). */
   void

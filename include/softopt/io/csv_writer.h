@@ -38,6 +38,11 @@ namespace softopt
     fixed(const double value, const unsigned int decimals);
 
   private:
+    /** "Cannot write <file>: the system's reason." */
+    std::string
+    cannot_write() const;
+
+    std::string   name;
     std::ofstream out;
   };
 } // namespace softopt

@@ -40,7 +40,7 @@ namespace softopt
     void
     write_parameters(const dealii::ParameterHandler &prm) const;
 
-    /** Writes @p text to @p name (rank 0). */
+    /** Writes @p text to @p name (rank 0), whole: see write_whole_file(). */
     void
     write_text(const std::string &name, const std::string &text) const;
 
@@ -54,6 +54,11 @@ namespace softopt
     /** The locked file's descriptor on rank 0 (-1 elsewhere). */
     int lock = -1;
   };
+  /** Writes @p text to the file @p name aside and renames it over @p name,
+   * so that a kill leaves the old file or the new one, never a part. Throws
+   * a message naming the file and the system's reason (a full disk). */
+  void
+  write_whole_file(const std::string &name, const std::string &text);
 } // namespace softopt
 
 #endif

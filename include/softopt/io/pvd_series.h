@@ -19,6 +19,11 @@ namespace softopt
   public:
     PvdSeries(const std::string &file, const MPI_Comm comm);
 
+    /** A series that goes on from the one in @p file (a restarted run):
+     * its entries with times before @p continue_at whose files still
+     * exist come first. */
+    PvdSeries(const std::string &file, const MPI_Comm comm, const double continue_at);
+
     void
     add(const double time, const std::string &vtu_file);
 

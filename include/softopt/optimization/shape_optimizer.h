@@ -126,6 +126,8 @@ namespace softopt
     ConditionalOStream            pcout;
     std::unique_ptr<CsvWriter>    history;
     std::map<std::string, std::unique_ptr<PvdSeries>> snapshots;
+    /** The iteration this run started at (a restart's). */
+    unsigned int first_iteration = 0;
     bool                          stopped_on_error = false;
     bool                          any_accepted     = false;
     /** The last check switched branch: the design has several equilibria

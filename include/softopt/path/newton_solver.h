@@ -31,7 +31,8 @@ namespace softopt
 
     /**
      * Watches one sequence of Newton iterations: says when it has converged
-     * (|r| <= tolerance |lambda P|), and throws StepFailure when it will not
+     * (|r| <= tolerance |lambda P|, or a correction below round-off: see
+     * negligible()), and throws StepFailure when it will not
      * (a NaN, too many iterations, a residual that still grows after the
      * third iteration: the first update of a nearly incompressible body may
      * raise |r| by orders of magnitude, later growth means the step is too
@@ -47,6 +48,20 @@ namespace softopt
       converged(const unsigned int iteration,
                 const double       residual_norm,
                 const double       load_norm);
+
+      /**
+       * Whether a Newton correction da = K^-1 (-r) is below what the
+       * arithmetic resolves: |da . r| <= 1e-4 tolerance^2 |work|, with the
+       * work lambda P . a of the load (never at iteration 0). Near
+       * incompressibility (nu >= 0.4999999) round-off holds |r| in the
+       * stiff volumetric modes above tolerance |lambda P| while the
+       * displacement has converged; the state before the correction is
+       * then the converged one.
+       */
+      bool
+      negligible(const unsigned int iteration,
+                 const double       correction_energy,
+                 const double       work) const;
 
     private:
       const NewtonSolver &newton;

@@ -28,7 +28,13 @@ namespace softopt
                const std::string &subsection)
         : direction(parse_vector(prm.get("Direction"),
                                  input.where(subsection, "Direction")))
-      {}
+      {
+        // A zero direction makes the functional zero for every design.
+        AssertThrow(direction.norm() > 0,
+                    ExcMessage(input.where(subsection, "Direction") +
+                               ": the direction must not be zero (the "
+                               "functional would be 0 for every design)."));
+      }
 
       Tensor<1, 3>
       value(const Point<3> &) const override
