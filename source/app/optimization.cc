@@ -76,9 +76,18 @@ namespace softopt
         {
           // error_code overloads: nothing may throw on rank 0 alone.
           std::error_code code;
-          const bool      earlier = fs::exists(checkpoint, code) ||
+          // A run refused at its initial design left a header only.
+          const auto has_rows = [](const std::string &csv) {
+            std::ifstream in(csv);
+            std::string   line;
+            unsigned int  lines = 0;
+            while (lines < 2 && std::getline(in, line))
+              lines += !line.empty();
+            return lines >= 2;
+          };
+          const bool earlier = fs::exists(checkpoint, code) ||
                                fs::exists(checkpoint + ".old", code) ||
-                               fs::exists(out.file("history.csv"), code);
+                               has_rows(out.file("history.csv"));
           if (start == Start::fresh && earlier)
             error = "The output directory <" + out.path() + "> holds an "
                     "earlier run (history.csv or checkpoint/). Continue it "

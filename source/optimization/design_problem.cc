@@ -24,6 +24,33 @@ namespace softopt
         at.push_back(&states.at(load_factor));
       return at;
     }
+
+    /** Loading's path, for the paths from rest of the design loop: with
+     * "Limit point below a target = refuse", arclength (its step control
+     * keeps it on the branch from rest: a load step can jump over a fold)
+     * stopping at a maximum of the load. */
+    PathFollowing::Parameters
+    design_loop_path(const ProblemParameters &parameters)
+    {
+      PathFollowing::Parameters path = parameters.loading.path;
+      if (parameters.optimization.refuse_limit_points)
+        {
+          path.method              = PathFollowing::Method::arclength;
+          path.stop_at_limit_point = true;
+        }
+      return path;
+    }
+
+    /** After a path stopped at a limit point: how to optimize anyway. */
+    std::string
+    snap_hint(const PathFollowing::Result &result)
+    {
+      return result.stopped_at_limit_point ?
+               " (Such designs are refused by \"Limit point below a target = "
+               "refuse\", subsection Optimization; \"follow\" optimizes the "
+               "state the part snaps to.)" :
+               "";
+    }
   } // namespace
 
 
@@ -34,7 +61,7 @@ namespace softopt
     : parameters(parameters)
     , comm(comm)
     , filter(parameters.shape_filter)
-    , path_following(parameters.loading.path)
+    , path_following(design_loop_path(parameters))
     , timer_output(comm, std::cout, TimerOutput::never, TimerOutput::wall_times)
   {
     build(mesh_file);
@@ -117,14 +144,18 @@ namespace softopt
 
 
   std::vector<double>
-  DesignProblem::evaluate(DesignIterate &x)
+  DesignProblem::evaluate(DesignIterate &x, const bool check_from_rest)
   {
     Vector                   psi = x.psi;
     std::map<double, Vector> states;
     std::vector<double>      values;
+    last_check.reset();
     try
       {
         values = evaluate_design(x, psi, states);
+        if (check_from_rest && report.warm_started)
+          last_check =
+            compare_from_rest(states, values, parameters.optimization.branch_tolerance);
       }
     catch (...)
       {
@@ -138,7 +169,17 @@ namespace softopt
       x.secant.accept(nodal_positions(), x.states);
     x.psi    = std::move(psi);
     x.states = std::move(states);
+    if (last_check && last_check->switched) // the design before is on the other branch
+      x.secant.restore(x.secant.last_positions(), SecantPredictor::Design());
     return values;
+  }
+
+
+
+  const std::optional<DesignProblem::BranchCheck> &
+  DesignProblem::branch_check() const
+  {
+    return last_check;
   }
 
 
@@ -190,7 +231,7 @@ namespace softopt
         AssertThrow(result.target_states.size() == targets.size(),
                     ExcMessage("The load path of this design did not reach "
                                "every target load factor: " +
-                               result.stop_reason));
+                               result.stop_reason + snap_hint(result)));
         states.clear();
         for (unsigned int i = 0; i < targets.size(); ++i)
           states.emplace(result.target_load_factors[i], result.target_states[i]);
@@ -222,6 +263,19 @@ namespace softopt
                               std::vector<double> &values,
                               const double         tolerance)
   {
+    const BranchCheck check = compare_from_rest(x.states, values, tolerance);
+    if (check.switched)
+      x.secant.restore(x.secant.last_positions(), SecantPredictor::Design());
+    return check;
+  }
+
+
+
+  DesignProblem::BranchCheck
+  DesignProblem::compare_from_rest(std::map<double, Vector> &states,
+                                   std::vector<double>      &values,
+                                   const double              tolerance)
+  {
     TimerOutput::Scope scope(timer_output, "path from rest");
     BranchCheck        check;
     ConditionalOStream quiet(std::cout, false);
@@ -231,17 +285,18 @@ namespace softopt
       targets,
       [](const PathFollowing::PathPoint &, const Vector &) { return std::string(); },
       quiet);
+    tangent_at = -1; // the path assembled other states
     std::map<double, Vector> from_rest;
     for (unsigned int i = 0; i < result.target_states.size(); ++i)
       if (std::find(targets.begin(), targets.end(), result.target_load_factors[i]) !=
           targets.end())
         from_rest.emplace(result.target_load_factors[i], result.target_states[i]);
-    tangent_at = -1; // the path assembled other states
-    if (from_rest.size() != targets.size())
-      {
-        check.failure = result.stop_reason;
-        return check;
-      }
+    // A design the warm start reached but inflating it from rest does not:
+    // its states are not the part's.
+    AssertThrow(from_rest.size() == targets.size(),
+                ExcMessage("The warm start reached the targets, but loading the "
+                           "design from rest does not: " +
+                           result.stop_reason + snap_hint(result)));
 
     std::vector<double> rest_values;
     for (unsigned int i = 0; i < functionals_.size(); ++i)
@@ -257,9 +312,8 @@ namespace softopt
     if (check.difference > tolerance)
       {
         check.switched = true;
-        x.states       = std::move(from_rest);
+        states         = std::move(from_rest);
         values         = std::move(rest_values);
-        x.secant.restore(x.secant.last_positions(), SecantPredictor::Design());
       }
     return check;
   }

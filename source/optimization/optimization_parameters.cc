@@ -115,6 +115,18 @@ namespace softopt
                       "|g_rest| of a functional between the warm-started "
                       "states and those from rest that counts as the same "
                       "branch (dimensionless).");
+    prm.declare_entry(
+      "Limit point below a target",
+      "refuse",
+      Patterns::Selection("refuse|follow"),
+      "A design whose pressure has a maximum (a limit point) below a target "
+      "snaps through there when inflated: its objective jumps between "
+      "neighbouring designs, and the optimizer can chase the jump. refuse: "
+      "such a design is refused like an inverted one (the step is halved); "
+      "the loop's paths from rest use arclength with its step control, so "
+      "that they cannot step over a fold (doc/theory.md). follow: the path "
+      "goes on through the limit point (subsection Loading) and the target "
+      "state is the one the part snaps to.");
     prm.declare_entry("Final analysis steps",
                       "20",
                       Patterns::Integer(1, 10000),
@@ -141,6 +153,7 @@ namespace softopt
     final_analysis_steps = prm.get_integer("Final analysis steps");
     from_rest_interval   = prm.get_integer("Path from rest interval");
     branch_tolerance     = prm.get_double("Branch tolerance");
+    refuse_limit_points  = prm.get("Limit point below a target") == "refuse";
     warm_start           = prm.get_bool("Warm start");
     secant_predictor     = prm.get("Warm start predictor") == "secant";
     step_halvings        = prm.get_integer("Step halvings");

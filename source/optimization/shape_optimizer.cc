@@ -65,16 +65,28 @@ namespace softopt
             update_mesh(k, x) : // X_o <- X_o + psi(d), d <- 0
             std::nullopt;
 
+        // After a warm start, check the states against those from rest
+        // every "Path from rest interval" iterations, at every mesh update,
+        // at the first iteration of a restart, and after a check that
+        // switched branch (the designs there have several equilibria: the
+        // warm start can leave the physical one again at any iteration).
+        const bool check_from_rest =
+          opt.from_rest_interval > 0 &&
+          (k == first || switched_last_check || opt.every(k, opt.from_rest_interval) ||
+           opt.every(k, opt.mesh_update_interval));
+
         Timer               timer;
         std::vector<double> values; // psi(d), X, path to every target
-        const std::string   refused = evaluate_or_halve(k, before_update, x, values);
+        const std::string   refused =
+          evaluate_or_halve(k, before_update, check_from_rest, x, values);
         if (!refused.empty())
           {
             stopped_on_error = true;
             return refused;
           }
         any_accepted = true;
-        const auto branch = check_branch(k, first, x, values); // states from rest?
+        const auto &branch  = problem.branch_check(); // states from rest?
+        switched_last_check = branch && branch->switched;
         const auto gradients = problem.gradients(x); // adjoints, Eqs. sens01-06
         x.accepted           = x.d;
         if ((k == 0 && opt.output_interval > 0) || opt.every(k, opt.output_interval))
@@ -181,13 +193,14 @@ namespace softopt
   std::string
   ShapeOptimizer::evaluate_or_halve(const unsigned int            k,
                                     std::optional<DesignIterate> &before_update,
+                                    const bool                    check_from_rest,
                                     DesignIterate                &x,
                                     std::vector<double>          &values)
   {
     for (unsigned int halving = 0;; ++halving)
       try
         {
-          values = problem.evaluate(x);
+          values = problem.evaluate(x, check_from_rest);
           return "";
         }
       catch (const std::exception &e)
@@ -224,29 +237,6 @@ namespace softopt
           pcout << "  iteration " << k << ": design refused (" << reason
                 << "); step halved" << std::endl;
         }
-  }
-
-
-
-  std::optional<DesignProblem::BranchCheck>
-  ShapeOptimizer::check_branch(const unsigned int   k,
-                               const unsigned int   first,
-                               DesignIterate       &x,
-                               std::vector<double> &values)
-  {
-    // A path from zero needs no check; after a warm start, check every
-    // "Path from rest interval" iterations, at every mesh update, at the
-    // first iteration of a restart, and after a check that switched branch
-    // (the designs there have several equilibria: the warm start can leave
-    // the physical one again at any iteration).
-    const auto &opt = parameters;
-    if (!problem.path_report().warm_started || opt.from_rest_interval == 0 ||
-        !(k == first || switched_last_check || opt.every(k, opt.from_rest_interval) ||
-          opt.every(k, opt.mesh_update_interval)))
-      return std::nullopt;
-    const auto check    = problem.check_branch(x, values, opt.branch_tolerance);
-    switched_last_check = check.switched;
-    return check;
   }
 
 
@@ -396,7 +386,7 @@ namespace softopt
     row.push_back(CsvWriter::format(health.worst_quality));
     for (unsigned int c = 0; c < 3; ++c)
       row.push_back(CsvWriter::format(health.worst_element[c]));
-    const bool compared = branch && branch->failure.empty();
+    const bool compared = branch.has_value();
     row.push_back(compared ? CsvWriter::format(branch->difference) : "");
     row.push_back(compared ? (branch->switched ? "1" : "0") : "");
     history->add_row(row);
@@ -419,8 +409,6 @@ namespace softopt
       pcout << "  from rest: " << (branch->switched ? "another branch" : "same branch")
             << " (" << std::setprecision(2) << branch->difference << ")"
             << (branch->switched ? ", the run goes on from the states from rest" : "");
-    else if (branch)
-      pcout << "  (the path from rest failed: " << branch->failure << ")";
     if (output.print_timings)
       pcout << "  " << std::setprecision(3) << wall_time << " s";
     pcout << std::endl;

@@ -296,6 +296,27 @@ namespace softopt
                           size_of(parameters.minimum_increment),
                           size_of(parameters.maximum_increment));
 
+        // A maximum of the load before the last target: a part inflated
+        // from rest snaps through there, to a state far from this path.
+        if (parameters.stop_at_limit_point && arclength && current.load_rate > 0 &&
+            next.load_rate <= 0)
+          {
+            std::ostringstream reason;
+            reason << "the pressure has a maximum (a limit point) between load "
+                   << "factors " << current.load_factor << " and "
+                   << next.load_factor;
+            if (parameters.full_load_kPa > 0)
+              reason << " (" << current.load_factor * parameters.full_load_kPa
+                     << " and " << next.load_factor * parameters.full_load_kPa
+                     << " kPa)";
+            reason << ", below the target load factor " << target
+                   << ": inflated from rest, the part snaps through there.";
+            result.stop_reason            = reason.str();
+            result.failed                 = true;
+            result.stopped_at_limit_point = true;
+            break;
+          }
+
         // The load rate changed sign between the two points: a limit point
         // lies between them, located and reported before the next point.
         if (arclength && (current.load_rate > 0) != (next.load_rate > 0))

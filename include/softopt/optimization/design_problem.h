@@ -12,6 +12,7 @@
 #include <softopt/shape/shape_filter.h>
 
 #include <map>
+#include <optional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -73,13 +74,15 @@ namespace softopt
      * The functional values at the design variables x.d: filters d
      * (Newton from x.psi), follows the path to every target load factor
      * (warm-started from x.states along x.secant, or from zero) and
-     * evaluates the functionals. Then x.psi, x.states and x.secant are
-     * those of x.d. Throws a message if the filter refuses the shape or the
+     * evaluates the functionals. With @p check_from_rest, after a warm
+     * start, also loads the design from rest and compares (check_branch(),
+     * Branch tolerance; branch_check() says what it found). Then x.psi,
+     * x.states and x.secant are those of x.d. Throws a message if the filter refuses the shape or the
      * path cannot reach a target; @p x and the mapping then stay as they
      * were. @p x must be the iterate this problem holds (see the class).
      */
     std::vector<double>
-    evaluate(DesignIterate &x);
+    evaluate(DesignIterate &x, bool check_from_rest = false);
 
     /** What check_branch() found. */
     struct BranchCheck
@@ -88,9 +91,13 @@ namespace softopt
       double difference = 0;
       /** Whether the run goes on from the states from rest. */
       bool switched = false;
-      /** Why the path from rest failed ("" if it did not). */
-      std::string failure;
     };
+
+    /** What the last evaluate() found when it checked the warm-started
+     * states against those from rest (evaluate()'s @p check_from_rest,
+     * after a warm start only), else empty. */
+    const std::optional<BranchCheck> &
+    branch_check() const;
 
     /**
      * Loads the design of @p x, just evaluated to @p values, from rest to
@@ -100,7 +107,10 @@ namespace softopt
      * warm-started states were on another branch than inflating the design
      * reaches: x.states and @p values become those from rest and the
      * secant forgets the design before (its states are on the other
-     * branch). If the path from rest fails, @p x stays as it is.
+     * branch). Throws a message if the path from rest does not reach
+     * every target (with "Limit point below a target = refuse", also at a
+     * maximum of the load below one). evaluate() does the same before it
+     * accepts a design when asked to.
      */
     BranchCheck
     check_branch(DesignIterate &x, std::vector<double> &values, const double tolerance);
@@ -187,6 +197,12 @@ namespace softopt
     timer();
 
   private:
+    /** check_branch() on @p states and @p values, the secant aside. */
+    BranchCheck
+    compare_from_rest(std::map<double, Vector> &states,
+                      std::vector<double>      &values,
+                      const double              tolerance);
+
     /** Mesh, design configuration, physics and filter on @p mesh_file
      * ("": the parameter file's). */
     void
@@ -226,6 +242,7 @@ namespace softopt
     std::unique_ptr<HyperelasticProblem>          problem;
     ShapeFilter                                   filter;
     const PathFollowing                           path_following;
+    std::optional<BranchCheck>                    last_check;
     /** The statistics of the physics on earlier meshes of the run. */
     HyperelasticProblem::Statistics               earlier_meshes_statistics;
     std::vector<const Functional *>               functionals_;

@@ -36,6 +36,9 @@ namespace softopt
     unsigned int from_rest_interval = 10;
     /** Relative difference of a functional that counts as another branch. */
     double       branch_tolerance   = 1e-3;
+    /** Whether a design with a pressure maximum below a target is refused
+     * (its paths from rest then use arclength). */
+    bool         refuse_limit_points = true;
     bool         warm_start           = true;
     /** Whether the warm start extrapolates the states along the secant
      * through the last two designs (SecantPredictor). */

@@ -73,22 +73,15 @@ namespace softopt
 
     /** The functional values at x.d into @p values; a refused d is halved
      * towards the accepted design (at most Step halvings times; a mesh
-     * update to it is undone first). Returns why the run stops, or "" once
-     * d is accepted. */
+     * update to it is undone first); with @p check_from_rest, a design
+     * whose path from rest fails is refused too. Returns why the run stops,
+     * or "" once d is accepted. */
     std::string
     evaluate_or_halve(const unsigned int            k,
                       std::optional<DesignIterate> &before_update,
+                      bool                          check_from_rest,
                       DesignIterate                &x,
                       std::vector<double>          &values);
-
-    /** At iteration @p k (the run started at @p first), if due, loads the
-     * design from rest and goes on from those states if the warm-started
-     * ones are on another branch (DesignProblem::check_branch()). */
-    std::optional<DesignProblem::BranchCheck>
-    check_branch(const unsigned int   k,
-                 const unsigned int   first,
-                 DesignIterate       &x,
-                 std::vector<double> &values);
 
     /** A fresh MMA on the design variables of @p x (start, mesh update). */
     void

@@ -62,6 +62,10 @@ namespace softopt
        * arclength: through a limit point, onto the branch that a part
        * inflated from rest snaps to. False: it stops there. */
       bool arclength_past_limit_points = true;
+      /** The path stops, failed, where the load factor passes a maximum
+       * (a limit point: the load rate turns negative) before the last
+       * target: the design loop's "Limit point below a target = refuse". */
+      bool stop_at_limit_point = false;
       /** The pressure (kPa) at load factor 1, for messages only (0: none). */
       double full_load_kPa = 0;
     };
@@ -105,6 +109,9 @@ namespace softopt
       double arclength_from = -1;
       /** The load factors of the limit points located, in path order. */
       std::vector<double> limit_load_factors;
+      /** Whether the path stopped at a maximum of the load below a target
+       * (Parameters::stop_at_limit_point). */
+      bool stopped_at_limit_point = false;
       /** Converged states at the targets reached, in order. */
       std::vector<double>                     target_load_factors;
       std::vector<EquilibriumProblem::Vector> target_states;
