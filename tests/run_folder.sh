@@ -10,7 +10,16 @@
 #   5. a second run into a folder while a first one writes there stops at
 #      once, naming the first run's process;
 #   6. --start-over removes the earlier run and starts at iteration 0;
-#   7. after a restart, design.pvd lists the snapshots from before it too.
+#   7. after a restart, design.pvd lists the snapshots from before it too;
+#   8. a restart from a truncated checkpoint says so;
+#   9. a restart whose checkpoint names a new mesh that was deleted names
+#      that mesh;
+#  10. a rerun killed (-9) in its final analysis leaves no stop reason of
+#      the finished run beside its partial load_path.csv, and a restart
+#      then finishes it;
+#  11. a full disk (load_path.csv linked to /dev/full) and an output folder
+#      that cannot be made are reported with the file and the system's
+#      reason.
 # Usage: run_folder.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
@@ -108,4 +117,53 @@ if [ "$listed" != 'file="design_0000.pvtu" file="design_0001.pvtu" file="design_
 else
   echo "ok   design.pvd after the restart lists iterations 0, 1 and 2"
 fi
+# 8. A truncated checkpoint.
+case_file 100 2 > case.prm
+"$softopt" optimize case.prm --start-over > log 2>&1
+expect "run for the truncated checkpoint" $? ok
+truncate -s 2000 run/checkpoint/rank-0.bin
+rm run/final_analysis/stop_reason.txt
+"$softopt" optimize case.prm --restart > log 2>&1
+expect "restart from a truncated checkpoint" $? "rank-0.bin is truncated"
+
+# 9. The new mesh a checkpoint continues on, deleted.
+case_file 100 3 | sed 's/Checkpoint interval = 1/Checkpoint interval = 1\n  set Mesh update interval = 1\n  set Remesh below quality = 1/' > remesh.prm
+"$softopt" optimize remesh.prm --start-over > log 2>&1
+expect "run with new meshes" $? ok
+rm run/mesh-1.msh run/final_analysis/stop_reason.txt
+"$softopt" optimize remesh.prm --restart > log 2>&1
+expect "restart without its new mesh" $? "continues on the mesh <run/mesh-1.msh>"
+# 10. Killed in the final analysis of a rerun.
+case_file 100 2 > case.prm
+"$softopt" optimize case.prm --start-over > log 2>&1
+expect "run before the killed rerun" $? ok
+case_file 100 3 | sed 's/Final analysis steps = 1/Final analysis steps = 5000/' > slow.prm
+"$softopt" optimize slow.prm --restart > log 2>&1 &
+rerun=$!
+for _ in $(seq 300); do
+  [ "$(wc -l < run/final_analysis/load_path.csv 2>/dev/null || echo 0)" -gt 5 ] && break
+  sleep 0.1
+done
+kill -9 $rerun; wait $rerun 2>/dev/null
+if [ -e run/final_analysis/stop_reason.txt ]; then
+  echo "FAIL killed final analysis: the finished run's stop_reason.txt is still there"
+  failures=$((failures + 1))
+else
+  echo "ok   killed final analysis: no stale stop_reason.txt ($(($(wc -l < run/final_analysis/load_path.csv) - 1)) rows in load_path.csv)"
+fi
+case_file 100 3 > case3.prm
+"$softopt" optimize case3.prm --restart > log 2>&1
+expect "restart after the killed final analysis" $? ok
+if [ "$(cat run/final_analysis/stop_reason.txt 2>/dev/null)" != "reached the last target load factor" ]; then
+  echo "FAIL the restart did not finish the final analysis"; failures=$((failures + 1))
+fi
+# 11. A full disk, and a folder where a file is.
+sphere_case sphere.geo full "" 100 1 0 > full.prm
+mkdir -p full && ln -sf /dev/full full/load_path.csv
+"$softopt" analyze full.prm > log 2>&1
+expect "full disk" $? "Cannot write <full/load_path.csv>: No space left on device"
+touch a_file
+sphere_case sphere.geo a_file/out "" 100 1 0 > nodir.prm
+"$softopt" analyze nodir.prm > log 2>&1
+expect "output folder under a file" $? "Cannot create the output directory <a_file/out>"
 exit $failures

@@ -169,12 +169,6 @@ namespace softopt
     check_earlier_run(settings, out, start, comm);
     if (start != Start::restart)
       out.write_parameters(settings.prm);
-    else if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        // The verdict of the run being continued no longer holds.
-        std::error_code error;
-        std::filesystem::remove(out.file("stop_reason.txt"), error);
-      }
     ShapeOptimizer     optimizer(settings.optimization, settings.output, problem, out);
     const std::string  reason = optimizer.run(restart);
     pcout << "Stopped: " << reason << std::endl;

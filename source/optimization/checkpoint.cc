@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <cerrno>
+#include <cstring>
 #include <fstream>
 #include <vector>
 
@@ -70,12 +72,15 @@ namespace softopt
       read_vector(std::istream &in, Vector &v, const std::string &file)
       {
         const auto owned = v.locally_owned_elements();
-        AssertThrow(read_value<std::uint64_t>(in) == owned.n_elements(),
+        const auto size  = read_value<std::uint64_t>(in);
+        AssertThrow(in, ExcMessage("The checkpoint " + file + " is truncated."));
+        AssertThrow(size == owned.n_elements(),
                     ExcMessage(file + " was written for another mesh or "
                                       "another number of MPI ranks."));
         std::vector<double> values(owned.n_elements());
         in.read(reinterpret_cast<char *>(values.data()),
                 values.size() * sizeof(double));
+        AssertThrow(in, ExcMessage("The checkpoint " + file + " is truncated."));
         std::vector<types::global_dof_index> indices(owned.begin(), owned.end());
         v.set(indices, values);
         v.compress(VectorOperation::insert);
@@ -188,7 +193,16 @@ namespace softopt
       std::string   name;
       std::ifstream in(existing_directory(output_directory) + "/mesh");
       std::getline(in, name);
-      return name.empty() ? name : output_directory + "/" + name;
+      if (name.empty())
+        return name;
+      const std::string file = output_directory + "/" + name;
+      AssertThrow(std::ifstream(file).good(),
+                  ExcMessage("--restart: the checkpoint in <" + output_directory +
+                             "> continues on the mesh <" + file + "> (a new "
+                             "mesh of the design), which cannot be read: " +
+                             std::strerror(errno) + ". Restore it, or start "
+                             "over with --start-over."));
+      return file;
     }
 
 

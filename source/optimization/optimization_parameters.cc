@@ -96,8 +96,9 @@ namespace softopt
                       Patterns::Integer(0),
                       "Warm-started states can drift onto an equilibrium "
                       "branch that inflating the design from rest does not "
-                      "reach. Every this many iterations, and at every mesh "
-                      "update, the design is also loaded from rest to the "
+                      "reach. Every this many iterations, at every mesh "
+                      "update and at the last iteration (whose values the run "
+                      "reports), the design is also loaded from rest to the "
                       "targets (with subsection Loading's path following and "
                       "increments, as a design without warm start); if a "
                       "functional differs by more "
@@ -117,16 +118,17 @@ namespace softopt
                       "branch (dimensionless).");
     prm.declare_entry(
       "Limit point below a target",
-      "refuse",
-      Patterns::Selection("refuse|follow"),
+      "follow",
+      Patterns::Selection("follow|refuse"),
       "A design whose pressure has a maximum (a limit point) below a target "
-      "snaps through there when inflated: its objective jumps between "
-      "neighbouring designs, and the optimizer can chase the jump. refuse: "
-      "such a design is refused like an inverted one (the step is halved); "
-      "the loop's paths from rest use arclength with its step control, so "
-      "that they cannot step over a fold (doc/theory.md). follow: the path "
-      "goes on through the limit point (subsection Loading) and the target "
-      "state is the one the part snaps to.");
+      "snaps through there when inflated. follow: the target state is the "
+      "one the part snaps to (the path goes on through the limit point as "
+      "subsection Loading says); where the maximum passes the target from one "
+      "design to the next the objective jumps (doc/theory.md). refuse: such a "
+      "design is refused like an inverted one (the step is halved), for "
+      "actuators that must not snap; the loop's paths from rest then use "
+      "arclength with its step control, so that no load step can step over "
+      "a fold.");
     prm.declare_entry("Final analysis steps",
                       "20",
                       Patterns::Integer(1, 10000),

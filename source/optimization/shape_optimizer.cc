@@ -67,13 +67,14 @@ namespace softopt
 
         // After a warm start, check the states against those from rest
         // every "Path from rest interval" iterations, at every mesh update,
-        // at the first iteration of a restart, and after a check that
-        // switched branch (the designs there have several equilibria: the
-        // warm start can leave the physical one again at any iteration).
+        // at the first iteration of a restart, after a check that switched
+        // branch (the designs there have several equilibria: the warm start
+        // can leave the physical one again at any iteration), and at the
+        // last iteration, whose values the run reports.
         const bool check_from_rest =
           opt.from_rest_interval > 0 &&
           (k == first || switched_last_check || opt.every(k, opt.from_rest_interval) ||
-           opt.every(k, opt.mesh_update_interval));
+           opt.every(k, opt.mesh_update_interval) || k + 1 == opt.maximum_iterations);
 
         Timer               timer;
         std::vector<double> values; // psi(d), X, path to every target
@@ -310,6 +311,10 @@ namespace softopt
                            std::to_string(last_row + 1) + " to go on."));
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
+        // The verdicts of the run being continued no longer hold.
+        std::error_code error;
+        std::filesystem::remove(out.file("stop_reason.txt"), error);
+        std::filesystem::remove(out.file("final_analysis/stop_reason.txt"), error);
         std::ofstream rewrite(out.file("history.csv"));
         for (const auto &line : lines)
           rewrite << line << '\n';

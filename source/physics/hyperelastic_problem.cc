@@ -15,6 +15,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <cerrno>
 #include <sstream>
 
 namespace softopt
@@ -647,8 +649,23 @@ namespace softopt
       data_out.add_data_vector(sigma[k], sigma_names[k], DataOut<3>::type_cell_data);
     data_out.add_data_vector(subdomain, "subdomain", DataOut<3>::type_cell_data);
     data_out.build_patches(mapping, 2);
-    return data_out.write_vtu_with_pvtu_record(
-      directory + "/", name, counter, triangulation_comm, 4);
+    errno = 0;
+    try
+      {
+        return data_out.write_vtu_with_pvtu_record(
+          directory + "/", name, counter, triangulation_comm, 4);
+      }
+    catch (const ExceptionBase &)
+      {
+        // deal.II says only "an input/output error": name the files.
+        AssertThrow(false,
+                    ExcMessage("Cannot write the VTU snapshot " + name + "_" +
+                               Utilities::int_to_string(counter, 4) +
+                               " into <" + directory + ">: " +
+                               (errno != 0 ? std::strerror(errno) :
+                                             "input/output error") + "."));
+      }
+    return "";
   }
 
 

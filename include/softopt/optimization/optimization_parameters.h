@@ -38,7 +38,7 @@ namespace softopt
     double       branch_tolerance   = 1e-3;
     /** Whether a design with a pressure maximum below a target is refused
      * (its paths from rest then use arclength). */
-    bool         refuse_limit_points = true;
+    bool         refuse_limit_points = false;
     bool         warm_start           = true;
     /** Whether the warm start extrapolates the states along the secant
      * through the last two designs (SecantPredictor). */
