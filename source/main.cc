@@ -143,8 +143,9 @@ main(int argc, char **argv)
       if (root)
         std::cerr << "\nsoftopt: error: " << e.what() << std::endl;
     }
-  // Every error the program raises is raised on all ranks alike; abort
-  // rather than hang if one was not.
+  // Most errors are raised on all ranks alike; a few (a file rank 0 alone
+  // writes, a rank's own checkpoint file) on one rank: abort rather than
+  // leave the others waiting.
   if (dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1)
     MPI_Abort(MPI_COMM_WORLD, 1);
   return 1;

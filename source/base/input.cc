@@ -24,7 +24,7 @@ namespace softopt
     while (!sets_something && std::getline(in, line))
       {
         const std::string text = Utilities::trim(line.substr(0, line.find('#')));
-        sets_something         = !text.empty();
+        sets_something         = text.rfind("set ", 0) == 0;
       }
     AssertThrow(sets_something,
                 ExcMessage("The parameter file <" + path +

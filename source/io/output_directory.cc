@@ -138,7 +138,7 @@ namespace softopt
       out << text;
       out.flush();
       AssertThrow(out.good(),
-                  dealii::ExcMessage("Cannot write <" + aside + ">: " +
+                  dealii::ExcMessage("Cannot write <" + name + "> (as <" + aside + ">): " +
                                      (errno != 0 ? std::strerror(errno) :
                                                    "unknown reason") + "."));
     }

@@ -239,7 +239,14 @@ namespace softopt
       read_vector(in, x.accepted, file);
       read_vector(in, x.X_o, file);
       read_vector(in, x.psi, file);
-      x.mma->load(in);
+      try
+        {
+          x.mma->load(in);
+        }
+      catch (const std::exception &)
+        {
+          AssertThrow(false, ExcMessage("The checkpoint " + file + " is truncated."));
+        }
       x.states = read_states(in, state_template, file);
       Vector                  X_last;
       SecantPredictor::Design previous;

@@ -128,7 +128,9 @@ namespace softopt
       "design is refused like an inverted one (the step is halved), for "
       "actuators that must not snap; the loop's paths from rest then use "
       "arclength with its step control, so that no load step can step over "
-      "a fold.");
+      "a fold. A warm-started design is tested when it is checked from rest "
+      "(Path from rest interval, and always at the last iteration; 1: "
+      "every design).");
     prm.declare_entry("Final analysis steps",
                       "20",
                       Patterns::Integer(1, 10000),

@@ -313,11 +313,14 @@ namespace softopt
       {
         // The verdicts of the run being continued no longer hold.
         std::error_code error;
-        std::filesystem::remove(out.file("stop_reason.txt"), error);
-        std::filesystem::remove(out.file("final_analysis/stop_reason.txt"), error);
-        std::ofstream rewrite(out.file("history.csv"));
+        for (const char *name : {"stop_reason.txt",
+                                 "final_analysis/stop_reason.txt",
+                                 "final_analysis/load_path_summary.csv"})
+          std::filesystem::remove(out.file(name), error);
+        std::string text;
         for (const auto &line : lines)
-          rewrite << line << '\n';
+          text += line + '\n';
+        write_whole_file(out.file("history.csv"), text);
       }
     MPI_Barrier(comm);
     history = std::make_unique<CsvWriter>(out.file("history.csv"), comm);

@@ -176,6 +176,8 @@ namespace softopt
         have_tangent = true;
         // P is -P here: the work lambda P . a and the correction's energy.
         if (monitor.negligible(iteration,
+                               norm,
+                               load_norm,
                                std::abs(du_r * r),
                                std::abs(next.load_factor * (P * next.a))))
           return converged();

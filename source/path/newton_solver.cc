@@ -76,6 +76,8 @@ namespace softopt
 
   bool
   NewtonSolver::Monitor::negligible(const unsigned int iteration,
+                                    const double       residual_norm,
+                                    const double       load_norm,
                                     const double       correction_energy,
                                     const double       work) const
   {
@@ -85,8 +87,11 @@ namespace softopt
     // tolerance |lambda P| in the soft modes the ratio is about 1e-2
     // tolerance^2 (the sphere at nu = 0.4999: 6e-19 for 1e-8); round-off
     // stalls |r| near 4e-8 |lambda P| at nu = 0.49999999 with the ratio at
-    // 4e-24. Only after a first update: iteration 0 follows a load change.
+    // 4e-24. Only after a first update: iteration 0 follows a load change;
+    // and only with |r| near the tolerance: on an unstable branch K is
+    // indefinite and r^T K^-1 r can cancel.
     return iteration > 0 && work > 0 &&
+           residual_norm <= 1e3 * newton.tolerance * load_norm &&
            correction_energy <= 1e-4 * newton.tolerance * newton.tolerance * work;
   }
 
@@ -116,6 +121,8 @@ namespace softopt
         // At the round-off floor the increment is noise: keep a, whose
         // tangent is the one assembled.
         if (monitor.negligible(iteration,
+                               norm,
+                               load_norm,
                                std::abs(increment * residual),
                                std::abs(load_factor * (load * a))))
           return {iteration, norm};

@@ -655,15 +655,18 @@ namespace softopt
         return data_out.write_vtu_with_pvtu_record(
           directory + "/", name, counter, triangulation_comm, 4);
       }
-    catch (const ExceptionBase &)
+    catch (const ExceptionBase &e)
       {
-        // deal.II says only "an input/output error": name the files.
+        // deal.II's message names no file: name them, with the system's
+        // last reason (errno) beside deal.II's words.
+        std::ostringstream what;
+        e.print_info(what);
         AssertThrow(false,
                     ExcMessage("Cannot write the VTU snapshot " + name + "_" +
                                Utilities::int_to_string(counter, 4) +
-                               " into <" + directory + ">: " +
-                               (errno != 0 ? std::strerror(errno) :
-                                             "input/output error") + "."));
+                               " into <" + directory + "> (" +
+                               (errno != 0 ? std::strerror(errno) : "no system reason") +
+                               "): " + Utilities::trim(what.str())));
       }
     return "";
   }

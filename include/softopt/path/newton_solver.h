@@ -52,7 +52,8 @@ namespace softopt
       /**
        * Whether a Newton correction da = K^-1 (-r) is below what the
        * arithmetic resolves: |da . r| <= 1e-4 tolerance^2 |work|, with the
-       * work lambda P . a of the load (never at iteration 0). Near
+       * work lambda P . a of the load, and |r| <= 1e3 tolerance |lambda P|
+       * (never at iteration 0). Near
        * incompressibility (nu >= 0.4999999) round-off holds |r| in the
        * stiff volumetric modes above tolerance |lambda P| while the
        * displacement has converged; the state before the correction is
@@ -60,6 +61,8 @@ namespace softopt
        */
       bool
       negligible(const unsigned int iteration,
+                 const double       residual_norm,
+                 const double       load_norm,
                  const double       correction_energy,
                  const double       work) const;
 
