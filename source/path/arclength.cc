@@ -139,31 +139,31 @@ namespace softopt
           std::max(std::abs(next.load_factor) * P.l2_norm(),
                    1e-6 * initial_load_norm);
         const auto converged = [&]() -> Point {
-            // Near a sharp fold the corrector can converge to a point behind
-            // the current one; the path would then trace itself backwards.
-            const double along = Du * Du_0 + psi_squared * Dl * Dl_0;
-            if (secant && along <= 0)
-              throw StepFailure("the step turned back along the path");
-            if (!have_tangent)
-              {
-                problem.factorize();
-                P *= -1.;
-                problem.solve(P, du_f);
-              }
-            // The tangent (du_f, 1) of the last iterate, oriented along the
-            // step (Newton's last update is far below the step).
-            const double orientation = (du_f * Du + psi_squared * Dl) >= 0 ? 1. : -1.;
-            next.load_rate =
-              orientation / std::sqrt(1. + (du_f * du_f) / linear_norm_squared);
-            next.turning_angle = std::acos(std::clamp(
-              along / std::sqrt((Du * Du + psi_squared * Dl * Dl) *
-                                (Du_0 * Du_0 + psi_squared * Dl_0 * Dl_0)),
-              -1.,
-              1.));
-            next.state_change  = Du.l2_norm() / std::sqrt(linear_norm_squared);
-            next.iterations    = iteration;
-            next.residual_norm = norm;
-            return next;
+          // Near a sharp fold the corrector can converge to a point behind
+          // the current one; the path would then trace itself backwards.
+          const double along = Du * Du_0 + psi_squared * Dl * Dl_0;
+          if (secant && along <= 0)
+            throw StepFailure("the step turned back along the path");
+          if (!have_tangent)
+            {
+              problem.factorize();
+              P *= -1.;
+              problem.solve(P, du_f);
+            }
+          // The tangent (du_f, 1) of the last iterate, oriented along the
+          // step (Newton's last update is far below the step).
+          const double orientation = (du_f * Du + psi_squared * Dl) >= 0 ? 1. : -1.;
+          next.load_rate =
+            orientation / std::sqrt(1. + (du_f * du_f) / linear_norm_squared);
+          next.turning_angle = std::acos(std::clamp(
+            along / std::sqrt((Du * Du + psi_squared * Dl * Dl) *
+                              (Du_0 * Du_0 + psi_squared * Dl_0 * Dl_0)),
+            -1.,
+            1.));
+          next.state_change  = Du.l2_norm() / std::sqrt(linear_norm_squared);
+          next.iterations    = iteration;
+          next.residual_norm = norm;
+          return next;
         };
         if (monitor.converged(iteration, norm, load_norm))
           return converged();
