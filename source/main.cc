@@ -10,6 +10,7 @@
 #include <softopt/app/gradient_check.h>
 #include <softopt/app/optimization.h>
 #include <softopt/app/settings.h>
+#include <softopt/app/verification.h>
 
 #include <algorithm>
 #include <iostream>
@@ -27,6 +28,8 @@ namespace
     "  softopt optimize CASE.prm --restart  continue from the last checkpoint\n"
     "  softopt optimize CASE.prm --start-over  remove an earlier run's\n"
     "                                    checkpoint and history, then start\n"
+    "  softopt verify CASE.prm           analyze a finished run's final design on\n"
+    "                                    the finer meshes of \"Mesh sizes\"\n"
     "  softopt check-gradients CASE.prm  adjoint gradients against finite differences\n"
     "  softopt CASE.prm                  run the prm file's \"Command\"\n"
     "  softopt print-parameters          every entry, with its default and "
@@ -89,7 +92,7 @@ main(int argc, char **argv)
           command = args[0];
           file    = args[1];
         }
-      else if (args[0] == "analyze" || args[0] == "check-gradients")
+      else if (args[0] == "analyze" || args[0] == "check-gradients" || args[0] == "verify")
         {
           AssertThrow(args.size() == 2,
                       dealii::ExcMessage(std::string("\"softopt ") + args[0] +
@@ -120,6 +123,8 @@ main(int argc, char **argv)
       AssertThrow(!(restart && start_over),
                   dealii::ExcMessage(std::string("--restart and --start-over exclude each other.\n") +
                                      usage));
+      if (command == "verify")
+        return softopt::run_verification(settings, MPI_COMM_WORLD);
       if (command == "optimize")
         return softopt::run_optimization(settings,
                                          restart    ? softopt::Start::restart :

@@ -251,6 +251,24 @@ namespace softopt
 
 
 
+  AnalysisBody::AnalysisBody(const Settings   &settings,
+                             const MPI_Comm    comm,
+                             const std::string &mesh_file)
+    : triangulation(std::make_unique<parallel::fullydistributed::Triangulation<3>>(comm))
+  {
+    design  = std::make_unique<DesignConfiguration>(
+      *triangulation, settings.geometry.create_triangulation(*triangulation, mesh_file));
+    problem = std::make_unique<HyperelasticProblem>(*triangulation,
+                                                    design->get_mapping(),
+                                                    settings.geometry,
+                                                    *settings.material,
+                                                    settings.loading.pressure_kPa * 1e-3);
+    problem->setup_system();
+    problem->set_linear_solver(settings.linear_solver);
+  }
+
+
+
   int
   run_analysis(const Settings &settings, const MPI_Comm comm)
   {
@@ -258,17 +276,10 @@ namespace softopt
                              Utilities::MPI::this_mpi_process(comm) == 0);
     Timer              setup_timer;
 
-    parallel::fullydistributed::Triangulation<3> triangulation(comm);
-    const DesignConfiguration design(triangulation,
-                                     settings.geometry.create_triangulation(triangulation));
-    HyperelasticProblem   problem(triangulation,
-                                design.get_mapping(),
-                                settings.geometry,
-                                *settings.material,
-                                settings.loading.pressure_kPa * 1e-3);
-    problem.setup_system();
-    problem.set_linear_solver(settings.linear_solver);
-    pcout << "Mesh: " << triangulation.n_global_active_cells()
+    const AnalysisBody body(settings, comm);
+    HyperelasticProblem       &problem = *body.problem;
+    const DesignConfiguration &design  = *body.design;
+    pcout << "Mesh: " << body.triangulation->n_global_active_cells()
           << " tetrahedra, " << problem.get_dof_handler().n_dofs()
           << " degrees of freedom" << std::endl;
 

@@ -3,6 +3,8 @@
 
 #include <softopt/app/analysis.h>
 #include <softopt/app/optimization.h>
+#include <softopt/app/verification.h>
+#include <softopt/io/design_mesh.h>
 #include <softopt/io/output_directory.h>
 #include <softopt/io/parameter_differences.h>
 #include <softopt/base/subprocess.h>
@@ -94,12 +96,15 @@ namespace softopt
                     "with \"softopt optimize " + file + " --restart\", start "
                     "over with \"softopt optimize " + file + " --start-over\" "
                     "(which first removes its checkpoint, history.csv, "
-                    "stop_reason.txt, design.stl and final_analysis/), or set another "
+                    "stop_reason.txt, design.stl, design.msh, design.prm, final_analysis/ "
+                    "and the verification), or set another "
                     "\"Output directory\".";
           else if (start == Start::start_over)
             {
               for (const auto *name : {"checkpoint", "checkpoint.old", "history.csv",
-                                       "stop_reason.txt", "final_analysis", "design.stl"})
+                                       "stop_reason.txt", "final_analysis", "design.stl",
+                                       "design.msh", "design.prm", "verification",
+                                       "verification.csv"})
                 if (fs::remove_all(out.file(name), code) == std::uintmax_t(-1))
                   error = "Cannot remove " + out.file(name) + ": " + code.message();
             }
@@ -127,6 +132,27 @@ namespace softopt
         }
       error = Utilities::MPI::broadcast(comm, error, 0);
       AssertThrow(error.empty(), ExcMessage(error));
+    }
+
+
+    /** design.prm: the case on the final design's mesh (design.msh, beside
+     * it), for "softopt analyze" at other pressures, materials or load
+     * paths; its results go to design_analysis/ in the output directory. */
+    void
+    write_design_parameters(const Settings &settings, const OutputDirectory &out)
+    {
+      ParameterHandler prm;
+      Settings::declare_parameters(prm, settings.input.get());
+      prm.parse_input(settings.input->path());
+      prm.set("Command", "analyze");
+      prm.set("Output directory", out.file("design_analysis"));
+      prm.enter_subsection("Geometry");
+      prm.set("Mesh file", "design.msh");
+      prm.set("Mesh parameters", "");
+      prm.leave_subsection();
+      std::ostringstream text;
+      prm.print_parameters(text, ParameterHandler::PRM);
+      out.write_text("design.prm", text.str());
     }
   } // namespace
 
@@ -183,6 +209,13 @@ namespace softopt
     pcout << "Wrote " << out.file("design.stl") << " (" << n_triangles
           << " triangles, mm)" << std::endl;
 
+    write_design_mesh(problem.design_configuration(), out.file("design.msh"));
+    write_design_parameters(settings, out);
+    pcout << "Wrote " << out.file("design.msh") << " and " << out.file("design.prm")
+          << " (the final design as a quadratic mesh, and the case on it: "
+             "\"softopt analyze "
+          << out.file("design.prm") << "\")" << std::endl;
+
     pcout << "\nForward analysis of the final design:" << std::endl;
     const std::string final_directory = out.file("final_analysis");
     if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -197,6 +230,23 @@ namespace softopt
                                          targets,
                                          final_directory,
                                          pcout);
+    bool verified = true;
+    if (!settings.verification.mesh_sizes.empty())
+      {
+        VerificationRow first;
+        first.mesh_size_mm =
+          optimization_mesh_size(settings, problem.design_configuration());
+        first.cells = problem.hyperelastic_problem()
+                        .get_dof_handler()
+                        .get_triangulation()
+                        .n_global_active_cells();
+        first.dofs   = problem.hyperelastic_problem().get_dof_handler().n_dofs();
+        first.values = values_at_targets(problem.hyperelastic_problem(),
+                                         problem.design_configuration(),
+                                         problem.functionals(),
+                                         result);
+        verified = verify_design(settings, out.file("design.msh"), first, out, pcout);
+      }
     plot(out.path(), comm, pcout);
     if (settings.output.print_timings)
       {
@@ -208,6 +258,6 @@ namespace softopt
         problem.timer().print_summary();
         pcout << "Wall time: " << timer.wall_time() << " s" << std::endl;
       }
-    return optimizer.failed() || result.failed ? 1 : 0;
+    return optimizer.failed() || result.failed || !verified ? 1 : 0;
   }
 } // namespace softopt

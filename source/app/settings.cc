@@ -15,7 +15,7 @@ namespace softopt
                       "checked.");
     prm.declare_entry("Command",
                       "analyze",
-                      Patterns::Selection("analyze|optimize|check-gradients"),
+                      Patterns::Selection("analyze|optimize|verify|check-gradients"),
                       "What \"softopt CASE.prm\" does when no command is "
                       "given on the command line.");
     OutputParameters::declare_parameters(prm);
@@ -26,6 +26,7 @@ namespace softopt
     ShapeFilter::Parameters::declare_parameters(prm);
     OptimizationParameters::declare_parameters(prm);
     DirectSolver::declare_parameters(prm);
+    VerificationParameters::declare_parameters(prm);
     Functionals::declare_parameters(prm, input);
   }
 
@@ -47,6 +48,7 @@ namespace softopt
     shape_filter.parse_parameters(prm, *input);
     optimization.parse_parameters(prm, *input);
     linear_solver = DirectSolver::parse_parameters(prm);
+    verification.parse_parameters(prm, *input);
     for (auto &f : Functionals::create(prm, *input))
       functionals.push_back(std::move(f));
   }

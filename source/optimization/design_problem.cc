@@ -249,8 +249,18 @@ namespace softopt
   std::vector<double>
   DesignProblem::final_analysis_path() const
   {
-    std::vector<double> path = targets;
-    const unsigned int  n    = parameters.optimization.final_analysis_steps;
+    return softopt::final_analysis_path(parameters);
+  }
+
+
+
+  std::vector<double>
+  final_analysis_path(const ProblemParameters &parameters)
+  {
+    std::vector<double> path = parameters.loading.target_load_factors;
+    for (const auto &f : parameters.functionals)
+      path.insert(path.end(), f->load_factors().begin(), f->load_factors().end());
+    const unsigned int n = parameters.optimization.final_analysis_steps;
     for (unsigned int i = 1; i <= n; ++i)
       path.push_back(double(i) / n);
     return path; // PathFollowing sorts and merges repeats

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -61,20 +62,76 @@ namespace softopt
       std::map<Edge, Point<3>>               midpoints;
     };
 
+    /** The P2 surface of a face with @p part's nodes at @p t: the point at
+     * barycentric coordinates (n - i - j, i, j) / n. Points on an edge are
+     * computed from that edge's nodes alone, from its lexicographically
+     * smaller end, so neighbouring faces get them equal bit for bit. */
+    Point<3>
+    surface_point(const std::vector<double> &part,
+                  const std::size_t          t,
+                  const unsigned int         i,
+                  const unsigned int         j,
+                  const unsigned int         n)
+    {
+      const auto corner = [&](const unsigned int k) { return point(part, t + 3 * k); };
+      // midpoint(k): the midside node opposite corner k.
+      const auto midpoint = [&](const unsigned int k) { return point(part, t + 9 + 3 * k); };
+      // The edge from corner a to b, k/n of the way.
+      const auto on_edge = [&](unsigned int a, unsigned int b, const unsigned int m, unsigned int k) {
+        if (PointLess()(corner(b), corner(a)))
+          {
+            std::swap(a, b);
+            k = n - k;
+          }
+        const double s = double(k) / n;
+        return Point<3>((1 - s) * (1 - 2 * s) * corner(a) + s * (2 * s - 1) * corner(b) +
+                        4 * s * (1 - s) * midpoint(m));
+      };
+      if (j == 0)
+        return on_edge(0, 1, 2, i);
+      if (i == 0)
+        return on_edge(0, 2, 1, j);
+      if (i + j == n)
+        return on_edge(1, 2, 0, j);
+      const double l[3] = {double(n - i - j) / n, double(i) / n, double(j) / n};
+      Point<3>     x;
+      for (unsigned int k = 0; k < 3; ++k)
+        x += l[k] * (2 * l[k] - 1) * corner(k) +
+             4 * l[(k + 1) % 3] * l[(k + 2) % 3] * midpoint(k);
+      return x;
+    }
+
     /**
      * Writes the boundary triangles (corners only) with their boundary ids
-     * as discrete surfaces, in gmsh's format 2.2.
+     * as discrete surfaces, in gmsh's format 2.2. With @p n > 1 each face
+     * is split into n^2 triangles whose nodes, and the midside nodes of
+     * whose edges, lie on the face's P2 surface: a finer triangulation of
+     * the same curved body.
      */
     Surface
     write_surface(const std::vector<std::vector<double>> &parts,
-                  const std::string                      &file)
+                  const std::string                      &file,
+                  const unsigned int                      n)
     {
       Surface surface;
-      auto   &number = surface.number;
+      auto   &number    = surface.number;
+      auto   &midpoints = surface.midpoints;
+      // Per face, the (i, j) of the sub-triangles' corners on the grid of
+      // step 1/n: "up" ones (i, j), (i+1, j), (i, j+1) and "down" ones
+      // (i+1, j), (i+1, j+1), (i, j+1), oriented as the face.
+      std::vector<std::array<std::array<unsigned int, 2>, 3>> pattern;
+      for (unsigned int i = 0; i < n; ++i)
+        for (unsigned int j = 0; i + j < n; ++j)
+          {
+            pattern.push_back({{{{i, j}}, {{i + 1, j}}, {{i, j + 1}}}});
+            if (i + j + 1 < n)
+              pattern.push_back({{{{i + 1, j}}, {{i + 1, j + 1}}, {{i, j + 1}}}});
+          }
       for (const auto &part : parts)
         for (std::size_t t = 0; t < part.size(); t += face_size)
-          for (unsigned int v = 0; v < 3; ++v)
-            number.emplace(point(part, t + 3 * v), 0);
+          for (unsigned int i = 0; i <= n; ++i)
+            for (unsigned int j = 0; i + j <= n; ++j)
+              number.emplace(surface_point(part, t, i, j, n), 0);
       GmshMesh mesh;
       for (auto &[p, i] : number)
         {
@@ -84,26 +141,45 @@ namespace softopt
       // The triangles as (boundary id, corners), sorted: the same file
       // (and so the same mesh) on any number of MPI ranks.
       std::vector<std::array<unsigned int, 4>> triangles;
-      auto &midpoints = surface.midpoints;
       for (const auto &part : parts)
         for (std::size_t t = 0; t < part.size(); t += face_size)
-          {
-            std::array<unsigned int, 4> triangle;
-            triangle[0] = static_cast<unsigned int>(part[t + 18]);
-            for (unsigned int v = 0; v < 3; ++v)
-              triangle[v + 1] = number.at(point(part, t + 3 * v));
-            triangles.push_back(triangle);
-            // midpoint[k] is opposite corner k.
-            for (unsigned int k = 0; k < 3; ++k)
-              midpoints[edge(triangle[1 + (k + 1) % 3], triangle[1 + (k + 2) % 3])] =
-                point(part, t + 9 + 3 * k);
-          }
+          for (const auto &corners : pattern)
+            {
+              std::array<unsigned int, 4> triangle;
+              triangle[0] = static_cast<unsigned int>(part[t + 18]);
+              for (unsigned int v = 0; v < 3; ++v)
+                triangle[v + 1] =
+                  number.at(surface_point(part, t, corners[v][0], corners[v][1], n));
+              triangles.push_back(triangle);
+              // The midside node of each edge: its grid midpoint, on the
+              // grid of step 1/(2n).
+              for (unsigned int k = 0; k < 3; ++k)
+                {
+                  const auto &a = corners[(k + 1) % 3], &b = corners[(k + 2) % 3];
+                  midpoints[edge(triangle[1 + (k + 1) % 3], triangle[1 + (k + 2) % 3])] =
+                    surface_point(part, t, a[0] + b[0], a[1] + b[1], 2 * n);
+                }
+            }
       std::sort(triangles.begin(), triangles.end());
       for (const auto &[id, a, b, c] : triangles)
         // Physical and elementary tag: the boundary id.
         mesh.elements.push_back({0, 2, {id, id}, {a, b, c}});
       write_gmsh_mesh(mesh, file);
       return surface;
+    }
+
+    /** The mean length of the boundary faces' straight edges, over
+     * @p parts. */
+    double
+    mean_edge_length(const std::vector<std::vector<double>> &parts)
+    {
+      double       sum = 0;
+      std::size_t  count = 0;
+      for (const auto &part : parts)
+        for (std::size_t t = 0; t < part.size(); t += face_size)
+          for (unsigned int k = 0; k < 3; ++k, ++count)
+            sum += point(part, t + 3 * k).distance(point(part, t + 3 * ((k + 1) % 3)));
+      return count > 0 ? sum / count : 0;
     }
 
     /** A quadratic tetrahedron of gmsh's mesh: its corner tags and, per
@@ -223,24 +299,45 @@ namespace softopt
         mesh.nodes[tag] = p;
       write_gmsh_mesh(mesh, file);
     }
+
+
+
+    /** Every boundary face of @p design in the layout of face_size; on
+     * rank 0 one part per rank, elsewhere none. Collective. */
+    std::vector<std::vector<double>>
+    gathered_faces(const DesignConfiguration &design)
+    {
+      std::vector<double> local;
+      for (const auto &face : locally_owned_boundary_faces(design))
+        {
+          for (const auto *nodes : {&face.corner, &face.midpoint})
+            for (const auto &p : *nodes)
+              for (unsigned int d = 0; d < 3; ++d)
+                local.push_back(p[d]);
+          local.push_back(face.boundary_id);
+        }
+      return Utilities::MPI::gather(design.get_dof_handler().get_communicator(), local, 0);
+    }
   } // namespace
 
 
 
-  void
-  remesh_design(const DesignConfiguration &design, const std::string &msh_file)
+  double
+  mean_boundary_edge_length(const DesignConfiguration &design)
   {
     const MPI_Comm comm = design.get_dof_handler().get_communicator();
-    std::vector<double> local;
-    for (const auto &face : locally_owned_boundary_faces(design))
-      {
-        for (const auto *nodes : {&face.corner, &face.midpoint})
-          for (const auto &p : *nodes)
-            for (unsigned int d = 0; d < 3; ++d)
-              local.push_back(p[d]);
-        local.push_back(face.boundary_id);
-      }
-    const auto  parts = Utilities::MPI::gather(comm, local, 0);
+    return Utilities::MPI::broadcast(comm, mean_edge_length(gathered_faces(design)), 0);
+  }
+
+
+
+  void
+  remesh_design(const DesignConfiguration &design,
+                const std::string         &msh_file,
+                const double               mesh_size)
+  {
+    const MPI_Comm comm  = design.get_dof_handler().get_communicator();
+    const auto     parts = gathered_faces(design);
     std::string error;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       try
@@ -249,7 +346,13 @@ namespace softopt
             (std::filesystem::path(msh_file).parent_path() /
              std::filesystem::path(msh_file).stem())
               .string();
-          const auto surface = write_surface(parts, stem + ".surface.msh");
+          // Each face split n x n: edges of at most mesh_size on average.
+          const unsigned int n =
+            mesh_size > 0 ?
+              std::max(1u, static_cast<unsigned int>(
+                              std::ceil(mean_edge_length(parts) / mesh_size - 1e-9))) :
+              1;
+          const auto surface = write_surface(parts, stem + ".surface.msh", n);
           std::ofstream geo(stem + ".geo");
           geo << "// softopt: a new mesh of the design inside its boundary\n"
               << "Merge \"" << std::filesystem::path(stem).filename().string()
@@ -258,7 +361,10 @@ namespace softopt
               << "// thick, where the default Delaunay left some; one thread\n"
               << "// for a reproducible mesh.\n"
               << "Mesh.Algorithm3D = 10;\n"
-              << "General.NumThreads = 1;\n"
+              << "General.NumThreads = 1;\n";
+          if (mesh_size > 0)
+            geo << "Mesh.MeshSizeMax = " << mesh_size << ";\n";
+          geo
               << "Surface Loop(1) = Surface{:};\n"
               << "Volume(1) = {1};\n"
               << "Physical Volume(1) = {1};\n";

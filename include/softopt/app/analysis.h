@@ -2,6 +2,7 @@
 #define softopt_app_analysis_h
 
 #include <deal.II/base/conditional_ostream.h>
+#include <deal.II/distributed/fully_distributed_tria.h>
 
 #include <softopt/app/settings.h>
 #include <softopt/path/path_following.h>
@@ -10,6 +11,20 @@
 
 namespace softopt
 {
+  /**
+   * A body to analyze: the mesh @p mesh_file (empty: the settings' Mesh
+   * file), its design configuration X = X_o as meshed, and the physics on
+   * it, set up. Members in the order they depend on each other.
+   */
+  struct AnalysisBody
+  {
+    AnalysisBody(const Settings &settings, const MPI_Comm comm, const std::string &mesh_file = "");
+
+    std::unique_ptr<parallel::fullydistributed::Triangulation<3>> triangulation;
+    std::unique_ptr<DesignConfiguration>                          design;
+    std::unique_ptr<HyperelasticProblem>                          problem;
+  };
+
   /**
    * "softopt analyze CASE.prm": inflates the body along its load path and
    * writes, in the output directory, load_path.csv (one row per converged

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <softopt/app/verification_parameters.h>
 #include <softopt/base/input.h>
 #include <softopt/io/output_parameters.h>
 #include <softopt/optimization/problem_parameters.h>
@@ -38,6 +39,9 @@ namespace softopt
 
     /** subsection Output and Print timings */
     OutputParameters output;
+
+    /** subsection Verification */
+    VerificationParameters verification;
   };
 } // namespace softopt
 

@@ -255,6 +255,12 @@ namespace softopt
      * evaluate() at this load factor (negative: unknown). */
     double tangent_at = -1;
   };
+
+  /** The load factors of the final analysis of a design of @p parameters:
+   * every target of the loading and the functionals, and "Final analysis
+   * steps" equal steps in (0, 1]. */
+  std::vector<double>
+  final_analysis_path(const ProblemParameters &parameters);
 } // namespace softopt
 
 #endif

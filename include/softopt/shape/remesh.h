@@ -17,12 +17,24 @@ namespace softopt
    * from gmsh's straight midpoints to the design's, so the new mesh has
    * the design's curved P2 surface (interior midside nodes are straight).
    *
+   * With @p mesh_size > 0 (mm) the boundary is first refined: each face is
+   * split into n x n triangles on its P2 surface, n the mean boundary edge
+   * over @p mesh_size (rounded up), and gmsh's elements are at
+   * most @p mesh_size: a finer mesh of the same curved body (verification).
+   *
    * Collective. Rank 0 writes @p msh_file (gmsh format 2.2) and, beside it,
    * the boundary it was meshed from (.surface.msh, linear) and the gmsh
    * script (.geo). Throws a message with gmsh's log if gmsh fails.
    */
   void
-  remesh_design(const DesignConfiguration &design, const std::string &msh_file);
+  remesh_design(const DesignConfiguration &design,
+                const std::string         &msh_file,
+                const double               mesh_size = 0);
+
+  /** The mean length of the straight edges of the design's boundary faces
+   * (corner to corner), in mm. Collective. */
+  double
+  mean_boundary_edge_length(const DesignConfiguration &design);
 } // namespace softopt
 
 #endif

@@ -1,0 +1,260 @@
+#include <deal.II/base/mpi.h>
+
+#include <softopt/app/analysis.h>
+#include <softopt/app/settings.h>
+#include <softopt/app/verification.h>
+#include <softopt/io/csv_writer.h>
+#include <softopt/io/output_directory.h>
+#include <softopt/io/parameter_differences.h>
+#include <softopt/optimization/design_problem.h>
+#include <softopt/shape/remesh.h>
+
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <map>
+#include <sstream>
+
+namespace softopt
+{
+  void
+  VerificationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Verification");
+    prm.declare_entry(
+      "Mesh sizes",
+      "",
+      Patterns::List(Patterns::Double(1e-6), 0),
+      "Element sizes in mm, for example \"2, 1\" (empty: none). After "
+      "\"optimize\", and with \"softopt verify CASE.prm\" for a finished "
+      "run, the final design is meshed anew at each size, from its curved "
+      "boundary refined to that size, and analyzed at the targets: "
+      "verification.csv then gives each functional on the optimization "
+      "mesh and on each finer mesh, so you see how far the run's values "
+      "can be trusted. Each size costs one analysis on that mesh.");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  VerificationParameters::parse_parameters(ParameterHandler &prm, const InputFile &input)
+  {
+    prm.enter_subsection("Verification");
+    mesh_sizes = parse_doubles(prm.get("Mesh sizes"), input.where("Verification", "Mesh sizes"));
+    prm.leave_subsection();
+  }
+
+
+
+  std::vector<double>
+  values_at_targets(const HyperelasticProblem             &problem,
+                    const DesignConfiguration             &design,
+                    const std::vector<const Functional *> &functionals,
+                    const PathFollowing::Result           &result)
+  {
+    std::map<double, const HyperelasticProblem::Vector *> states;
+    for (unsigned int i = 0; i < result.target_states.size(); ++i)
+      states[result.target_load_factors[i]] = &result.target_states[i];
+    std::vector<double> values;
+    for (const auto *f : functionals)
+      {
+        Functional::States at;
+        for (const double load_factor : f->load_factors())
+          if (const auto it = states.find(load_factor); it != states.end())
+            at.push_back(it->second);
+        values.push_back(at.size() == f->load_factors().size() ?
+                           f->evaluate(problem, design, at, nullptr) :
+                           std::nan(""));
+      }
+    return values;
+  }
+
+
+
+  double
+  optimization_mesh_size(const Settings &settings, const DesignConfiguration &design)
+  {
+    const std::string &file = settings.geometry.mesh_file;
+    if (file.size() > 4 && file.substr(file.size() - 4) == ".geo")
+      return settings.geometry.mesh_size;
+    return mean_boundary_edge_length(design);
+  }
+
+
+
+  namespace
+  {
+    /** "2mm", "1.5mm": the name of a mesh size in file names. */
+    std::string
+    size_name(const double h)
+    {
+      std::ostringstream name;
+      name << h << "mm";
+      return name.str();
+    }
+
+    std::vector<const Functional *>
+    functionals_of(const Settings &settings)
+    {
+      std::vector<const Functional *> functionals;
+      for (const auto &f : settings.functionals)
+        functionals.push_back(f.get());
+      return functionals;
+    }
+
+    /** The body's row: its values at the targets of its final analysis,
+     * in @p directory. */
+    std::pair<VerificationRow, bool>
+    analyze(const Settings           &settings,
+            const AnalysisBody       &body,
+            const double              mesh_size_mm,
+            const std::string        &directory,
+            const ConditionalOStream &pcout)
+    {
+      const MPI_Comm comm = body.problem->get_dof_handler().get_communicator();
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        std::filesystem::create_directories(directory);
+      MPI_Barrier(comm);
+      const auto functionals = functionals_of(settings);
+      const auto result      = follow_load_path(*body.problem,
+                                           *body.design,
+                                           settings,
+                                           functionals,
+                                           final_analysis_path(settings),
+                                           directory,
+                                           pcout);
+      VerificationRow row;
+      row.mesh_size_mm = mesh_size_mm;
+      row.cells        = body.triangulation->n_global_active_cells();
+      row.dofs         = body.problem->get_dof_handler().n_dofs();
+      row.values = values_at_targets(*body.problem, *body.design, functionals, result);
+      return {row, !result.failed};
+    }
+
+    std::vector<std::string>
+    csv_row(const VerificationRow &row)
+    {
+      std::vector<std::string> entries{CsvWriter::format(row.mesh_size_mm),
+                                       std::to_string(row.cells),
+                                       std::to_string(row.dofs)};
+      for (const double v : row.values)
+        entries.push_back(CsvWriter::format(v));
+      return entries;
+    }
+  } // namespace
+
+
+
+  bool
+  verify_design(const Settings           &settings,
+                const std::string        &design_mesh,
+                const VerificationRow    &first,
+                const OutputDirectory    &out,
+                const ConditionalOStream &pcout)
+  {
+    const MPI_Comm comm = MPI_COMM_WORLD;
+    std::vector<std::string> columns{"mesh_size_mm", "cells", "dofs"};
+    for (const auto &f : settings.functionals)
+      columns.push_back(f->name());
+    CsvWriter csv(out.file("verification.csv"), columns, comm);
+    csv.add_row(csv_row(first));
+    std::vector<VerificationRow> rows{first};
+    bool                         all_solved = true;
+
+    const AnalysisBody design(settings, comm, design_mesh);
+    for (const double h : settings.verification.mesh_sizes)
+      {
+        const std::string name = size_name(h);
+        const std::string mesh = out.file("verification/mesh_" + name + ".msh");
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          std::filesystem::create_directories(out.file("verification"));
+        MPI_Barrier(comm);
+        remesh_design(*design.design, mesh, h);
+        const AnalysisBody fine(settings, comm, mesh);
+        pcout << "\nVerification on a " << h << " mm mesh ("
+              << fine.triangulation->n_global_active_cells() << " tetrahedra, "
+              << fine.problem->get_dof_handler().n_dofs()
+              << " degrees of freedom):" << std::endl;
+        const auto [row, solved] =
+          analyze(settings, fine, h, out.file("verification/" + name), pcout);
+        csv.add_row(csv_row(row));
+        rows.push_back(row);
+        all_solved &= solved;
+      }
+
+    pcout << "\nVerification (verification.csv), against the optimization mesh:"
+          << std::endl;
+    for (unsigned int i = 0; i < columns.size() - 3; ++i)
+      {
+        pcout << "  " << columns[i + 3] << ": " << std::setprecision(6)
+              << first.values[i] << " (" << first.mesh_size_mm << " mm)";
+        for (unsigned int r = 1; r < rows.size(); ++r)
+          {
+            const double v = rows[r].values[i];
+            pcout << ", " << v << " (" << rows[r].mesh_size_mm << " mm, ";
+            if (std::isnan(v))
+              pcout << "target not reached)";
+            else
+              pcout << std::showpos << std::setprecision(2) << std::fixed
+                    << 100 * (v - first.values[i]) / std::abs(first.values[i])
+                    << std::noshowpos << std::defaultfloat << std::setprecision(6)
+                    << " %)";
+          }
+        pcout << std::endl;
+      }
+    return all_solved;
+  }
+
+
+
+  int
+  run_verification(const Settings &settings, const MPI_Comm comm)
+  {
+    ConditionalOStream pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0);
+    const std::string  directory   = settings.output_directory;
+    const std::string  design_mesh = directory + "/design.msh";
+    AssertThrow(!settings.verification.mesh_sizes.empty(),
+                ExcMessage(settings.input->where("Verification", "Mesh sizes") +
+                           " is empty: \"verify\" needs at least one mesh size "
+                           "(mm), for example \"2, 1\"."));
+    AssertThrow(std::filesystem::exists(design_mesh),
+                ExcMessage("\"verify\" checks the final design of a finished run, "
+                           "but <" + directory + "> (the Output directory of " +
+                           settings.input->path() + ") has no design.msh: run "
+                           "\"softopt optimize " + settings.input->path() +
+                           "\" first."));
+    // The same problem as the run's: only what says how to optimize, what
+    // to write and how to verify may differ.
+    if (std::filesystem::exists(directory + "/parameters.prm"))
+      {
+        const auto differences = parameter_differences(
+          directory + "/parameters.prm",
+          settings.prm,
+          {"Command", "Output directory", "Print timings", "Output/*", "Optimization/*",
+           "Shape filter/*", "Verification/*", "Geometry/Mesh file", "Geometry/Mesh size",
+           "Geometry/Mesh parameters"});
+        if (!differences.empty())
+          {
+            std::string error = settings.input->path() + ": \"verify\" analyzes the "
+                                "design of the run in <" + directory + "> with the "
+                                "same physics, but these entries differ from its "
+                                "parameters.prm:";
+            for (const auto &d : differences)
+              error += "\n  " + d;
+            AssertThrow(false, ExcMessage(error + "\nRestore them."));
+          }
+      }
+    const OutputDirectory out(directory, comm);
+    const AnalysisBody    design(settings, comm, design_mesh);
+    pcout << "The final design of <" << directory << "> (design.msh: "
+          << design.triangulation->n_global_active_cells() << " tetrahedra, "
+          << design.problem->get_dof_handler().n_dofs()
+          << " degrees of freedom):" << std::endl;
+    const auto [first, solved] =
+      analyze(settings, design, optimization_mesh_size(settings, *design.design),
+              out.file("verification/design_mesh"), pcout);
+    const bool fine_solved = verify_design(settings, design_mesh, first, out, pcout);
+    return solved && fine_solved ? 0 : 1;
+  }
+} // namespace softopt

@@ -1,0 +1,117 @@
+#!/bin/bash
+# Verification on finer meshes and the final design as a mesh (issue 19
+# item 3, issue 22 item 1), on the thick sphere octant (A = 1, B = 2 mm,
+# nu = 0.4999, p = 0.3 mu): the objective is the mean u_x over the outer
+# surface, w_B / 2 by symmetry, with w_B from the incompressible closed form.
+#  1. One iteration (the final design is the sphere itself) verified at 0.2
+#     and 0.12 mm: the errors fall toward the closed form; what is left is
+#     nu = 0.4999's compressibility (about 1e-4).
+#  2. Three iterations (a moved design): design.msh analyzed with
+#     design.prm repeats the final analysis to round-off, and
+#     "softopt verify" repeats verification.csv.
+# Usage: verification.sh SOFTOPT_EXECUTABLE SOURCE_DIR
+softopt=$1
+source=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+case_file() { # OUTPUT_DIRECTORY ITERATIONS MESH_SIZES
+  cat <<PRM
+set Output directory = $1
+set Print timings = false
+subsection Output
+  set VTU output = none
+end
+subsection Geometry
+  set Mesh file = $source/meshes/sphere_octant.geo
+  set Mesh size = 0.5
+  set Dirichlet boundaries = 1: x; 2: y; 3: z
+  set Pressure boundary ids = 4
+  set Design boundary ids = 5
+end
+subsection Material
+  set Young's modulus = 3
+  set Poisson's ratio = 0.4999
+end
+subsection Loading
+  set Pressure = 302
+end
+subsection Optimization
+  set Maximum iterations = $2
+  set Final analysis steps = 1
+  set Design bound = 0.05
+end
+subsection Objective 1
+  set Direction field = constant
+  set Direction = 1, 0, 0
+  set Weight = 1
+end
+subsection Verification
+  set Mesh sizes = $3
+end
+PRM
+}
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+
+case_file sphere 1 "0.2, 0.12" > sphere.prm
+"$softopt" optimize sphere.prm > sphere.log 2>&1 || { echo "FAIL optimize sphere"; cat sphere.log; exit 1; }
+/usr/bin/python3 - sphere/verification.csv <<'PY' || failures=$((failures + 1))
+import csv, sys
+E, nu, p, A, B = 3.0, 0.4999, 0.302, 1.0, 2.0
+mu = E / (2 * (1 + nu))
+f = lambda s: 2 / s + 1 / (2 * s**4)
+lb = lambda la: (1 + (la**3 - 1) * (A / B)**3) ** (1 / 3)
+lo, hi = 1.0, 1.5
+for _ in range(200):  # p / mu = f(lambda_b) - f(lambda_a), ascending
+    m = (lo + hi) / 2
+    lo, hi = (m, hi) if f(lb(m)) - f(m) < p / mu else (lo, m)
+exact = (lb(lo) - 1) * B / 2
+rows = list(csv.DictReader(open(sys.argv[1])))
+errors = [abs(float(r["g_1"]) / exact - 1) for r in rows]
+cells = [int(r["cells"]) for r in rows]
+print("     closed form mean u_x %.10f mm" % exact)
+for r, e in zip(rows, errors):
+    print("     %s mm: %6d cells, g_1 %.10f, error %.1e" % (r["mesh_size_mm"], int(r["cells"]), float(r["g_1"]), e))
+ok = len(rows) == 3 and cells[0] < cells[1] < cells[2]
+print(("ok  " if ok else "FAIL") + " three rows, optimization mesh first, cells increasing")
+ok2 = max(errors[1:]) < 0.2 * errors[0] and max(errors[1:]) < 2e-4
+print(("ok  " if ok2 else "FAIL") + " finer-mesh errors %.1e, %.1e (< 0.2 x %.1e and < 2e-4)" % (errors[1], errors[2], errors[0]))
+sys.exit(0 if ok and ok2 else 1)
+PY
+grep -q "g_1: .* (0.2 mm, +" sphere.log || fail "no change against the optimization mesh printed"
+
+case_file moved 3 "0.2" > moved.prm
+"$softopt" optimize moved.prm > moved.log 2>&1 || { echo "FAIL optimize moved"; cat moved.log; exit 1; }
+"$softopt" analyze moved/design.prm > analyze.log 2>&1 || { echo "FAIL analyze design.prm"; cat analyze.log; exit 1; }
+cp moved/verification.csv first_verification.csv
+"$softopt" verify moved.prm > verify.log 2>&1 || { echo "FAIL verify"; cat verify.log; exit 1; }
+/usr/bin/python3 - moved <<'PY' || failures=$((failures + 1))
+import csv, sys
+d = sys.argv[1]
+last = lambda f: list(csv.DictReader(open(f)))[-1]
+final = last(d + "/final_analysis/load_path.csv")
+again = last(d + "/design_analysis/load_path.csv")
+moved = float(list(csv.DictReader(open(d + "/history.csv")))[-1]["max_design_change_mm"])
+ok = True
+for c in ("cavity_volume_mm3", "g_1"):
+    e = abs(float(again[c]) / float(final[c]) - 1)
+    good = e < 1e-9
+    ok &= good
+    print(("ok  " if good else "FAIL") + " design.msh: %s %s against the final analysis's %s, difference %.0e (< 1e-9)" % (c, again[c], final[c], e))
+good = moved > 1e-3
+print(("ok  " if good else "FAIL") + " the final design moved (max |dd| %.3g mm > 1e-3)" % moved)
+sys.exit(0 if ok and good else 1)
+PY
+if cmp -s first_verification.csv moved/verification.csv; then
+  echo "ok   softopt verify repeats verification.csv ($(($(wc -l < first_verification.csv) - 1)) rows)"
+else
+  fail "softopt verify gives another verification.csv:"; diff first_verification.csv moved/verification.csv
+fi
+case_file moved 3 "" > empty.prm
+if "$softopt" verify empty.prm > empty.log 2>&1 || ! grep -q '"Mesh sizes" is empty' empty.log; then
+  fail "verify without mesh sizes"; cat empty.log
+else
+  echo "ok   verify without mesh sizes is refused: $(grep -o '"Mesh sizes" is empty[^.]*' empty.log | head -1)"
+fi
+exit $failures
