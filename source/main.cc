@@ -30,6 +30,9 @@ namespace
     "                                    checkpoint and history, then start\n"
     "  softopt verify CASE.prm           analyze a finished run's final design on\n"
     "                                    the finer meshes of \"Mesh sizes\"\n"
+    "  softopt check-design CASE.prm     castability checks (wall thickness,\n"
+    "                                    self-intersection) of a run's final\n"
+    "                                    design, or of the case's mesh\n"
     "  softopt check-gradients CASE.prm  adjoint gradients against finite differences\n"
     "  softopt CASE.prm                  run the prm file's \"Command\"\n"
     "  softopt print-parameters          every entry, with its default and "
@@ -92,7 +95,8 @@ main(int argc, char **argv)
           command = args[0];
           file    = args[1];
         }
-      else if (args[0] == "analyze" || args[0] == "check-gradients" || args[0] == "verify")
+      else if (args[0] == "analyze" || args[0] == "check-gradients" || args[0] == "verify" ||
+               args[0] == "check-design")
         {
           AssertThrow(args.size() == 2,
                       dealii::ExcMessage(std::string("\"softopt ") + args[0] +
@@ -125,6 +129,8 @@ main(int argc, char **argv)
                                      usage));
       if (command == "verify")
         return softopt::run_verification(settings, MPI_COMM_WORLD);
+      if (command == "check-design")
+        return softopt::run_check_design(settings, MPI_COMM_WORLD);
       if (command == "optimize")
         return softopt::run_optimization(settings,
                                          restart    ? softopt::Start::restart :

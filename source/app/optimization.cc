@@ -96,15 +96,16 @@ namespace softopt
                     "with \"softopt optimize " + file + " --restart\", start "
                     "over with \"softopt optimize " + file + " --start-over\" "
                     "(which first removes its checkpoint, history.csv, "
-                    "stop_reason.txt, design.stl, design.msh, design.prm, final_analysis/ "
-                    "and the verification), or set another "
+                    "stop_reason.txt, design.stl, design.msh, design.prm, final_analysis/, "
+                    "the verification and the castability checks), or set another "
                     "\"Output directory\".";
           else if (start == Start::start_over)
             {
               for (const auto *name : {"checkpoint", "checkpoint.old", "history.csv",
                                        "stop_reason.txt", "final_analysis", "design.stl",
                                        "design.msh", "design.prm", "verification",
-                                       "verification.csv"})
+                                       "verification.csv", "castability.csv",
+                                       "wall_thickness.vtu"})
                 if (fs::remove_all(out.file(name), code) == std::uintmax_t(-1))
                   error = "Cannot remove " + out.file(name) + ": " + code.message();
             }
@@ -215,6 +216,7 @@ namespace softopt
           << " (the final design as a quadratic mesh, and the case on it: "
              "\"softopt analyze "
           << out.file("design.prm") << "\")" << std::endl;
+    check_castability(settings, problem.design_configuration(), out, pcout);
 
     pcout << "\nForward analysis of the final design:" << std::endl;
     const std::string final_directory = out.file("final_analysis");

@@ -1,6 +1,8 @@
 #include <softopt/app/settings.h>
 #include <softopt/solvers/direct_solver.h>
 
+#include <filesystem>
+
 namespace softopt
 {
   void
@@ -15,7 +17,7 @@ namespace softopt
                       "checked.");
     prm.declare_entry("Command",
                       "analyze",
-                      Patterns::Selection("analyze|optimize|verify|check-gradients"),
+                      Patterns::Selection("analyze|optimize|verify|check-design|check-gradients"),
                       "What \"softopt CASE.prm\" does when no command is "
                       "given on the command line.");
     OutputParameters::declare_parameters(prm);
@@ -27,6 +29,7 @@ namespace softopt
     OptimizationParameters::declare_parameters(prm);
     DirectSolver::declare_parameters(prm);
     VerificationParameters::declare_parameters(prm);
+    CastabilityParameters::declare_parameters(prm);
     Functionals::declare_parameters(prm, input);
   }
 
@@ -47,8 +50,21 @@ namespace softopt
     newton.parse_parameters(prm);
     shape_filter.parse_parameters(prm, *input);
     optimization.parse_parameters(prm, *input);
+    // The schedule's size at iteration 0 is the first mesh's.
+    const auto &schedule = optimization.mesh_size_schedule;
+    if (!schedule.empty() && schedule.front().first == 0)
+      {
+        AssertThrow(std::filesystem::path(geometry.mesh_file).extension() == ".geo",
+                    ExcMessage(input->where("Optimization", "Mesh size schedule") +
+                               ": a size at iteration 0 sets the size of a .geo "
+                               "mesh, but Mesh file <" + geometry.mesh_file +
+                               "> is a mesh already; start the schedule after "
+                               "iteration 0."));
+        geometry.mesh_size = schedule.front().second;
+      }
     linear_solver = DirectSolver::parse_parameters(prm);
     verification.parse_parameters(prm, *input);
+    castability.parse_parameters(prm, *input);
     for (auto &f : Functionals::create(prm, *input))
       functionals.push_back(std::move(f));
   }

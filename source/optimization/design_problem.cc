@@ -3,6 +3,7 @@
 
 #include <softopt/base/step_failure.h>
 #include <softopt/optimization/design_problem.h>
+#include <softopt/physics/state_transfer.h>
 #include <softopt/shape/remesh.h>
 #include <softopt/shape/residual_shape_derivative.h>
 #include <softopt/shape/self_intersection.h>
@@ -417,10 +418,10 @@ namespace softopt
 
 
 
-  void
-  DesignProblem::remesh(DesignIterate &x, const std::string &msh_file)
+  unsigned long
+  DesignProblem::remesh(DesignIterate &x, const std::string &msh_file, const double mesh_size)
   {
-    remesh_design(*design, msh_file);
+    remesh_design(*design, msh_file, mesh_size);
     // Built beside the old mesh, which stays if anything fails.
     auto old_triangulation = std::move(triangulation);
     auto old_design        = std::move(design);
@@ -439,13 +440,17 @@ namespace softopt
         filter.setup(*design, parameters.geometry);
         throw;
       }
+    // The states carry over as Newton's start on the new mesh; psi, d and
+    // MMA start afresh (X_o is the design), the secant has no history.
+    auto transfer = transfer_states(*old_problem, x.states, *problem, design->get_mapping());
     earlier_meshes_statistics += old_problem->get_statistics();
     old_problem.reset(); // before the DoFs and the mesh it lives on
     old_design.reset();
-    // Nothing carries over: the next evaluate() follows the path from zero.
     x                  = initial_iterate();
+    x.states           = std::move(transfer.states);
     tangent_at         = -1;
     last_filter_result = ShapeFilter::Result();
+    return transfer.n_not_found;
   }
 
 

@@ -1,4 +1,9 @@
+#include <deal.II/base/utilities.h>
+
 #include <softopt/optimization/optimization_parameters.h>
+
+#include <cmath>
+#include <string>
 
 namespace softopt
 {
@@ -45,6 +50,22 @@ namespace softopt
                       "is above it) brings the mesh update forward to the "
                       "next iteration, so that elements do not collapse "
                       "between updates. 0: never, as in the paper.");
+    prm.declare_entry("Mesh size schedule",
+                      "",
+                      Patterns::Anything(),
+                      "A finer mesh as the design settles: \"size @ "
+                      "iteration\" pairs, comma-separated, sizes in mm, "
+                      "iterations ascending, e.g. \"4 @ 0, 2 @ 150, 1.2 @ "
+                      "300\". At each iteration named (> 0) the mesh is "
+                      "updated and the design meshed anew at that size from "
+                      "its curved boundary, refined on the design's P2 "
+                      "surface (as subsection Verification does); the states "
+                      "are carried to the new nodes as Newton's start, the "
+                      "design is checked from rest there, and d, psi and MMA "
+                      "start afresh. A size at iteration 0 replaces Mesh size "
+                      "of subsection Geometry (a .geo mesh only). The new "
+                      "meshes are written as mesh-<iteration>.msh into the "
+                      "output directory. Empty: the mesh keeps its size.");
     prm.declare_entry("Refuse self-intersecting designs",
                       "true",
                       Patterns::Bool(),
@@ -97,7 +118,8 @@ namespace softopt
                       "Warm-started states can drift onto an equilibrium "
                       "branch that inflating the design from rest does not "
                       "reach. Every this many iterations, at every mesh "
-                      "update and at the last iteration (whose values the run "
+                      "update (also one brought forward, and a new mesh of the "
+                      "schedule) and at the last iteration (whose values the run "
                       "reports), the design is also loaded from rest to the "
                       "targets (with subsection Loading's path following and "
                       "increments, as a design without warm start); if a "
@@ -143,10 +165,70 @@ namespace softopt
 
 
 
+  namespace
+  {
+    /** "4 @ 0, 2 @ 150" as (iteration, size) pairs; throws naming @p where. */
+    std::vector<std::pair<unsigned int, double>>
+    parse_schedule(const std::string &text, const std::string &where)
+    {
+      std::vector<std::pair<unsigned int, double>> schedule;
+      for (const auto &item : Utilities::split_string_list(text, ','))
+        {
+          const auto parts = Utilities::split_string_list(item, '@');
+          double     size  = 0;
+          long       k     = -1;
+          try
+            {
+              AssertThrow(parts.size() == 2, ExcMessage(""));
+              std::size_t end_size = 0, end_k = 0;
+              size = std::stod(parts[0], &end_size);
+              k    = std::stol(parts[1], &end_k);
+              AssertThrow(end_size == parts[0].size() && end_k == parts[1].size(),
+                          ExcMessage(""));
+            }
+          catch (...)
+            {
+              AssertThrow(false,
+                          ExcMessage(where + ": \"" + item + "\" is not \"size @ "
+                                     "iteration\" (for example \"2 @ 150\": 2 mm "
+                                     "from iteration 150 on)."));
+            }
+          AssertThrow(size > 0 && std::isfinite(size),
+                      ExcMessage(where + ": the size in \"" + item +
+                                 "\" must be positive (mm)."));
+          AssertThrow(k >= 0,
+                      ExcMessage(where + ": the iteration in \"" + item +
+                                 "\" must be 0 or more."));
+          AssertThrow(schedule.empty() || long(schedule.back().first) < k,
+                      ExcMessage(where + ": the iterations must ascend, but \"" +
+                                 item + "\" follows iteration " +
+                                 std::to_string(schedule.back().first) + "."));
+          schedule.emplace_back(k, size);
+        }
+      return schedule;
+    }
+  } // namespace
+
+
+
+  double
+  OptimizationParameters::scheduled_mesh_size(const unsigned int k) const
+  {
+    for (const auto &[iteration, size] : mesh_size_schedule)
+      if (k > 0 && iteration == k)
+        return size;
+    return 0;
+  }
+
+
+
   void
-  OptimizationParameters::parse_parameters(ParameterHandler &prm, const InputFile &)
+  OptimizationParameters::parse_parameters(ParameterHandler &prm, const InputFile &input)
   {
     prm.enter_subsection("Optimization");
+    mesh_size_schedule =
+      parse_schedule(prm.get("Mesh size schedule"),
+                     input.where("Optimization", "Mesh size schedule"));
     maximum_iterations   = prm.get_integer("Maximum iterations");
     move_limit           = prm.get_double("Move limit");
     design_bound         = prm.get_double("Design bound");

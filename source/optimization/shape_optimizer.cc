@@ -49,7 +49,7 @@ namespace softopt
                               "newton_iterations", "filter_iterations",
                               "min_J_psi", "worst_quality", "worst_element_x_mm",
                               "worst_element_y_mm", "worst_element_z_mm",
-                              "from_rest_difference", "branch_switched"})
+                              "from_rest_difference", "branch_switched", "cells"})
           columns.emplace_back(c);
         history = std::make_unique<CsvWriter>(out.file("history.csv"), columns, comm);
       }
@@ -60,21 +60,22 @@ namespace softopt
         // the iteration's mesh update as the uninterrupted run does.
         if (k > first && opt.every(k, opt.checkpoint_interval))
           Checkpoint::save(out.path(), k, x);
-        auto before_update =
-          opt.every(k, opt.mesh_update_interval) || elements_collapsing(k, x) ?
-            update_mesh(k, x) : // X_o <- X_o + psi(d), d <- 0
-            std::nullopt;
+        const double new_size = opt.scheduled_mesh_size(k); // 0: none at k
+        const bool   mesh_update = opt.every(k, opt.mesh_update_interval) ||
+                                 new_size > 0 || elements_collapsing(k, x);
+        auto before_update = mesh_update ? update_mesh(k, x, new_size) : // X_o <- X_o + psi(d), d <- 0
+                                           std::nullopt;
 
         // After a warm start, check the states against those from rest
-        // every "Path from rest interval" iterations, at every mesh update,
-        // at the first iteration of a restart, after a check that switched
+        // every "Path from rest interval" iterations, at every mesh update
+        // (and new mesh), at the first iteration of a restart, after a check that switched
         // branch (the designs there have several equilibria: the warm start
         // can leave the physical one again at any iteration), and at the
         // last iteration, whose values the run reports.
         const bool check_from_rest =
           opt.from_rest_interval > 0 &&
           (k == first || switched_last_check || opt.every(k, opt.from_rest_interval) ||
-           opt.every(k, opt.mesh_update_interval) || k + 1 == opt.maximum_iterations);
+           mesh_update || k + 1 == opt.maximum_iterations);
 
         Timer               timer;
         std::vector<double> values; // psi(d), X, path to every target
@@ -123,7 +124,7 @@ namespace softopt
 
 
   std::optional<DesignIterate>
-  ShapeOptimizer::update_mesh(const unsigned int k, DesignIterate &x)
+  ShapeOptimizer::update_mesh(const unsigned int k, DesignIterate &x, const double mesh_size)
   {
     // The mesh moves to the design d, not yet evaluated; if that design is
     // refused the update is undone and the step halved on the old mesh.
@@ -140,15 +141,17 @@ namespace softopt
         return std::nullopt;
       }
 
-    // Elements the design flattened stay flat in the updated mesh: mesh the
-    // design anew (not undone: the design is the same).
+    // Elements the design flattened stay flat in the updated mesh, and the
+    // schedule asks for a finer one: mesh the design anew (not undone: the
+    // design is the same).
     const double quality = problem.filter_result().worst_quality;
-    if (quality < parameters.remesh_quality)
+    if (quality < parameters.remesh_quality || mesh_size > 0)
       {
         const std::string file = out.file("mesh-" + std::to_string(k) + ".msh");
+        unsigned long     n_outside = 0;
         try
           {
-            problem.remesh(x, file);
+            n_outside = problem.remesh(x, file, mesh_size);
           }
         catch (const std::exception &e)
           {
@@ -157,14 +160,23 @@ namespace softopt
             return before;
           }
         reset_mma(x);
-        pcout << "  iteration " << k << ": worst element quality " << quality
-              << " < " << parameters.remesh_quality
-              << ", the design is meshed anew: "
+        pcout << "  iteration " << k << ": ";
+        if (mesh_size > 0)
+          pcout << "the schedule's mesh size " << mesh_size << " mm";
+        else
+          pcout << "worst element quality " << quality << " < "
+                << parameters.remesh_quality;
+        pcout << ", the design is meshed anew: "
               << problem.hyperelastic_problem()
                    .get_dof_handler()
                    .get_triangulation()
                    .n_global_active_cells()
-              << " tetrahedra (" << file << ")" << std::endl;
+              << " tetrahedra (" << file << "); "
+              << (n_outside == 0 ?
+                    "the states carry over" :
+                    std::to_string(n_outside) + " new nodes outside the old "
+                    "mesh: the states follow the path from zero")
+              << std::endl;
         return std::nullopt;
       }
     return before;
@@ -397,6 +409,8 @@ namespace softopt
     const bool compared = branch.has_value();
     row.push_back(compared ? CsvWriter::format(branch->difference) : "");
     row.push_back(compared ? (branch->switched ? "1" : "0") : "");
+    row.push_back(std::to_string(
+      problem.hyperelastic_problem().get_dof_handler().get_triangulation().n_global_active_cells()));
     history->add_row(row);
 
     pcout << "iteration " << std::setw(4) << iteration;

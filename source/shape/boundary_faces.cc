@@ -74,18 +74,29 @@ namespace softopt
 
 
   std::vector<double>
-  gathered_boundary_triangles(const DesignConfiguration &design)
+  gathered_boundary_triangles(const DesignConfiguration &design,
+                              std::vector<types::boundary_id> *boundary_ids)
   {
+    const auto          comm = design.get_dof_handler().get_communicator();
     std::vector<double> local;
+    std::vector<types::boundary_id> local_ids;
     for (const auto &face : locally_owned_boundary_faces(design))
       for (const auto &t : flat_triangles(face))
-        for (const auto &p : t)
-          for (unsigned int d = 0; d < 3; ++d)
-            local.push_back(p[d]);
+        {
+          local_ids.push_back(face.boundary_id);
+          for (const auto &p : t)
+            for (unsigned int d = 0; d < 3; ++d)
+              local.push_back(p[d]);
+        }
     std::vector<double> all;
-    for (const auto &part :
-         Utilities::MPI::gather(design.get_dof_handler().get_communicator(), local, 0))
+    for (const auto &part : Utilities::MPI::gather(comm, local, 0))
       all.insert(all.end(), part.begin(), part.end());
+    if (boundary_ids)
+      {
+        boundary_ids->clear();
+        for (const auto &part : Utilities::MPI::gather(comm, local_ids, 0))
+          boundary_ids->insert(boundary_ids->end(), part.begin(), part.end());
+      }
     return all;
   }
 } // namespace softopt

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <softopt/app/castability.h>
 #include <softopt/app/verification_parameters.h>
 #include <softopt/base/input.h>
 #include <softopt/io/output_parameters.h>
@@ -42,6 +43,9 @@ namespace softopt
 
     /** subsection Verification */
     VerificationParameters verification;
+
+    /** subsection Castability */
+    CastabilityParameters castability;
   };
 } // namespace softopt
 

@@ -127,13 +127,16 @@ namespace softopt
     void
     update_mesh(DesignIterate &x);
 
-    /** A new mesh of the current design X = X_o + psi (remesh_design()),
-     * written to @p msh_file and read from there; @p x becomes the new
-     * mesh's initial_iterate() (X_o the new mesh, nothing else carries
-     * over: the next evaluate() follows the path from zero). If it throws,
-     * the old mesh and @p x stay as they were. */
-    void
-    remesh(DesignIterate &x, const std::string &msh_file);
+    /** A new mesh of the current design X = X_o + psi (remesh_design(),
+     * with its boundary refined to @p mesh_size mm if > 0), written to
+     * @p msh_file and read from there; @p x becomes the new mesh's
+     * initial_iterate() with the states of @p x carried over
+     * (transfer_states()), so that the next evaluate() starts Newton from
+     * them; if a new node lies outside the old body, none carry over and
+     * it follows the path from zero. Returns how many new nodes were not
+     * found. If it throws, the old mesh and @p x stay as they were. */
+    unsigned long
+    remesh(DesignIterate &x, const std::string &msh_file, const double mesh_size = 0);
 
     /** Makes @p x, an iterate on this problem's mesh (a snapshot, a
      * checkpoint read on the mesh it names), this problem's iterate: sets

@@ -5,6 +5,9 @@
 
 #include <softopt/base/input.h>
 
+#include <utility>
+#include <vector>
+
 namespace softopt
 {
   /** The design loop (subsection "Optimization"), the paper's values by
@@ -47,6 +50,15 @@ namespace softopt
     unsigned int step_halvings = 3;
     /** Whether a design whose surface intersects itself is refused. */
     bool refuse_self_intersections = true;
+
+    /** "Mesh size schedule": element sizes in mm from the iterations
+     * given on, ascending in iteration (may start at 0: the first mesh). */
+    std::vector<std::pair<unsigned int, double>> mesh_size_schedule;
+
+    /** The element size the schedule asks for from iteration @p k > 0 on,
+     * in mm (0: the schedule changes nothing at @p k). */
+    double
+    scheduled_mesh_size(const unsigned int k) const;
 
     /** Whether iteration @p k > 0 is one of every @p interval (0: none). */
     static bool

@@ -57,11 +57,12 @@ namespace softopt
   private:
     /** X_o <- X_o + psi(d), d <- 0 and a fresh MMA, at iteration @p k;
      * remeshes the design if its worst element quality is below "Remesh
-     * below quality". Returns the iterate before, to undo the update if
-     * the design it moved the mesh to is refused (none if the filter
-     * refused psi(d) and it was undone already, or after a new mesh). */
+     * below quality", or at @p mesh_size mm if > 0 (Mesh size schedule).
+     * Returns the iterate before, to undo the update if the design it
+     * moved the mesh to is refused (none if the filter refused psi(d) and
+     * it was undone already, or after a new mesh). */
     std::optional<DesignIterate>
-    update_mesh(const unsigned int k, DesignIterate &x);
+    update_mesh(const unsigned int k, DesignIterate &x, const double mesh_size = 0);
 
     /** Whether the accepted design of @p x has flattened an element below
      * "Remesh below quality" since the last mesh update, on a mesh that

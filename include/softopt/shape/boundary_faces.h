@@ -36,9 +36,10 @@ namespace softopt
 
   /** The flat triangles of every boundary face of the mesh, 9 numbers
    * each (x, y, z of its three corners), gathered on rank 0 (empty on the
-   * others). Collective. */
+   * others), and with @p boundary_ids the boundary id of each. Collective. */
   std::vector<double>
-  gathered_boundary_triangles(const DesignConfiguration &design);
+  gathered_boundary_triangles(const DesignConfiguration       &design,
+                              std::vector<types::boundary_id> *boundary_ids = nullptr);
 } // namespace softopt
 
 #endif

@@ -1,0 +1,53 @@
+#ifndef softopt_shape_wall_thickness_h
+#define softopt_shape_wall_thickness_h
+
+#include <deal.II/base/point.h>
+
+#include <softopt/shape/design_configuration.h>
+
+#include <array>
+#include <limits>
+#include <set>
+#include <vector>
+
+namespace softopt
+{
+  /** The thickness of the body's walls at the nodes of its surface. */
+  struct WallThickness
+  {
+    /** The corners of the surface triangles (design.stl's: four flat
+     * triangles per quadratic face), each once, in mm. */
+    std::vector<Point<3>> nodes;
+    /** The surface triangles, three indices into nodes each, outward. */
+    std::vector<std::array<unsigned int, 3>> triangles;
+    /** At each node, the distance along the inward normal (the mean of
+     * the normals of the triangles around it) to the next surface
+     * triangle, in mm; infinite where the ray leaves the body through
+     * none (it cannot on a closed surface). */
+    std::vector<double> thickness;
+    /** The smallest thickness and the node where it occurs. */
+    double   minimum = std::numeric_limits<double>::infinity();
+    Point<3> where;
+  };
+
+  /**
+   * The wall thickness of the design X = X_o + psi, what a cast part needs
+   * (castability): from every node of the boundary surface, a ray along
+   * the inward normal to the first surface triangle it meets (CGAL's AABB
+   * tree, skipping the triangles around the node). Faces with a boundary
+   * id in @p mirrors are symmetry planes, not surfaces of the part: no ray
+   * starts there, and a ray that meets one is reflected (the body goes on
+   * beyond it). On a thick sphere octant the thickness is B - A at every
+   * node of its spherical surfaces. Collective; the result is on rank 0
+   * (minimum and where on every rank).
+   */
+  WallThickness
+  wall_thickness(const DesignConfiguration &design, const std::set<types::boundary_id> &mirrors);
+
+  /** Writes @p wall as a ParaView surface (.vtu) with the point field
+   * wall_thickness_mm into @p file (rank 0's call writes). */
+  void
+  write_wall_thickness_vtu(const WallThickness &wall, const std::string &file);
+} // namespace softopt
+
+#endif

@@ -1,0 +1,109 @@
+#include <softopt/app/analysis.h>
+#include <softopt/app/castability.h>
+#include <softopt/app/settings.h>
+#include <softopt/io/csv_writer.h>
+#include <softopt/shape/self_intersection.h>
+#include <softopt/shape/wall_thickness.h>
+
+#include <filesystem>
+#include <set>
+#include <iomanip>
+
+namespace softopt
+{
+  void
+  CastabilityParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Castability");
+    prm.declare_entry("Minimum wall thickness",
+                      "1",
+                      Patterns::Double(0),
+                      "Walls of the design thinner than this (mm) get a "
+                      "warning in castability.csv: about what casting in "
+                      "PVS tolerates. The thickness at a surface node is "
+                      "the distance to the opposite surface along the "
+                      "inward normal (\"softopt check-design\", and at the "
+                      "end of \"optimize\").");
+    prm.leave_subsection();
+  }
+
+
+
+  void
+  CastabilityParameters::parse_parameters(ParameterHandler &prm, const InputFile &)
+  {
+    prm.enter_subsection("Castability");
+    minimum_wall_thickness = prm.get_double("Minimum wall thickness");
+    prm.leave_subsection();
+  }
+
+
+
+  bool
+  check_castability(const Settings            &settings,
+                    const DesignConfiguration &design,
+                    const OutputDirectory     &out,
+                    ConditionalOStream        &pcout)
+  {
+    const MPI_Comm comm  = design.get_dof_handler().get_communicator();
+    const auto     place = [](const Point<3> &p) {
+      return std::vector<std::string>{CsvWriter::format(p[0]),
+                                      CsvWriter::format(p[1]),
+                                      CsvWriter::format(p[2])};
+    };
+    CsvWriter csv(out.file("castability.csv"),
+                  {"check", "value", "unit", "x_mm", "y_mm", "z_mm", "verdict"},
+                  comm);
+    pcout << "Castability (castability.csv):" << std::endl;
+
+    // Boundaries held in some directions only are symmetry planes.
+    std::set<types::boundary_id> mirrors;
+    for (const auto &[id, fixed] : settings.geometry.dirichlet_boundaries)
+      if (!(fixed[0] && fixed[1] && fixed[2]))
+        mirrors.insert(id);
+    const auto wall = wall_thickness(design, mirrors);
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      write_wall_thickness_vtu(wall, out.file("wall_thickness.vtu"));
+    const double minimum = settings.castability.minimum_wall_thickness;
+    const bool   thin    = wall.minimum < minimum;
+    std::vector<std::string> row{"minimum wall thickness", CsvWriter::format(wall.minimum), "mm"};
+    for (const auto &x : place(wall.where))
+      row.push_back(x);
+    row.push_back(thin ? "warning" : "ok");
+    csv.add_row(row);
+    pcout << "  minimum wall thickness " << std::setprecision(4) << wall.minimum << " mm at ("
+          << wall.where << ") mm: " << (thin ? "warning, below " : "ok, at least ") << minimum
+          << " mm (Minimum wall thickness; the field is in wall_thickness.vtu)" << std::endl;
+
+    const auto crossing = design_self_intersections(design);
+    row = {"self-intersections", std::to_string(crossing.pairs), "triangle pairs"};
+    for (const auto &x : place(crossing.where))
+      row.push_back(crossing.pairs > 0 ? x : "");
+    row.push_back(crossing.pairs > 0 ? "refused" : "ok");
+    csv.add_row(row);
+    pcout << "  self-intersections: ";
+    if (crossing.pairs > 0)
+      pcout << crossing.pairs << " pairs of surface triangles, one near (" << crossing.where
+            << ") mm: refused, the design cannot be cast" << std::endl;
+    else
+      pcout << "none, ok" << std::endl;
+    return crossing.pairs > 0;
+  }
+
+
+
+  int
+  run_check_design(const Settings &settings, const MPI_Comm comm)
+  {
+    ConditionalOStream pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0);
+    const std::string  design_mesh = settings.output_directory + "/design.msh";
+    const bool         finished    = std::filesystem::exists(design_mesh);
+    const OutputDirectory out(settings.output_directory, comm);
+    const AnalysisBody    body(settings, comm, finished ? design_mesh : "");
+    pcout << (finished ? "The final design of <" + settings.output_directory + "> (design.msh, " :
+                         "The mesh of " + settings.input->path() + " (")
+          << body.triangulation->n_global_active_cells() << " tetrahedra)" << std::endl;
+    check_castability(settings, *body.design, out, pcout);
+    return 0;
+  }
+} // namespace softopt

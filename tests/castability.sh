@@ -1,0 +1,77 @@
+#!/bin/bash
+# Castability checks (issue 22 item 2), "softopt check-design":
+#  1. Wall thickness on the thick sphere octant (A = 1, B = 2 mm): B - A at
+#     every node of its spherical surfaces (the symmetry planes are mirrors,
+#     not surfaces of the part), within the flat triangles' chord error;
+#     the verdict against Minimum wall thickness both ways.
+#  2. A body whose surface passes through itself (bad_input's overlapping
+#     boxes): the self-intersection row counts the pairs and refuses it.
+#  3. check-design on a finished run checks its design.msh.
+# Usage: castability.sh SOFTOPT_EXECUTABLE SOURCE_DIR
+softopt=$1
+source=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+source "$source/tests/sphere_case.sh"
+sphere() { # OUTPUT_DIRECTORY MINIMUM_WALL_THICKNESS ITERATIONS
+  sphere_case "$source/meshes/sphere_octant.geo" "$1" "" 302 "$3" 0
+  printf 'subsection Castability\n  set Minimum wall thickness = %s\nend\n' "$2"
+}
+
+sphere thin 0.9 1 > thin.prm
+"$softopt" check-design thin.prm > thin.log 2>&1 || { echo "FAIL check-design"; cat thin.log; exit 1; }
+/usr/bin/python3 - thin <<'PY' || failures=$((failures + 1))
+import csv, math, re, sys
+d = sys.argv[1]
+rows = {r["check"]: r for r in csv.DictReader(open(d + "/castability.csv"))}
+wall = rows["minimum wall thickness"]
+text = open(d + "/wall_thickness.vtu").read()
+arrays = re.findall(r'<DataArray[^>]*>\n(.*?)</DataArray>', text, re.S)
+points = [tuple(map(float, l.split())) for l in arrays[0].strip().split("\n")]
+thickness = [float(v) for v in arrays[-1].split()]
+on_spheres = [t for p, t in zip(points, thickness)
+              if min(abs(math.dist(p, (0, 0, 0)) - r) for r in (1, 2)) < 1e-6 and min(p) > 1e-6]
+worst = max(abs(t - 1) for t in on_spheres)
+ok = len(on_spheres) > 100 and worst < 0.01
+print(("ok  " if ok else "FAIL") + " thickness at %d nodes of the spheres off the planes: largest error %.1e mm (< 0.01, B - A = 1 mm)" % (len(on_spheres), worst))
+minimum = float(wall["value"])
+ok2 = abs(minimum - 1) < 0.01 and wall["verdict"] == "ok"
+print(("ok  " if ok2 else "FAIL") + " minimum wall thickness %.4f mm (within 0.01 of 1), verdict %s against 0.9 mm" % (minimum, wall["verdict"]))
+crossing = rows["self-intersections"]
+ok3 = crossing["value"] == "0" and crossing["verdict"] == "ok"
+print(("ok  " if ok3 else "FAIL") + " self-intersections %s, %s" % (crossing["value"], crossing["verdict"]))
+sys.exit(0 if ok and ok2 and ok3 else 1)
+PY
+
+sphere thick 1.5 1 > thick.prm
+"$softopt" check-design thick.prm > thick.log 2>&1 || { echo "FAIL check-design"; cat thick.log; exit 1; }
+grep -q "^minimum wall thickness,.*,warning$" thick/castability.csv &&
+  echo "ok   below Minimum wall thickness = 1.5 mm: warning" ||
+  { fail "no warning below 1.5 mm"; cat thick/castability.csv; }
+
+cp "$source/tests/bad_input/overlapping_boxes.geo" .
+sed -e 's/^set Output directory.*/set Output directory = boxes/' \
+  "$source/tests/bad_input/self_intersecting.prm" > boxes.prm
+"$softopt" check-design boxes.prm > boxes.log 2>&1 || { echo "FAIL check-design boxes"; cat boxes.log; exit 1; }
+row=$(grep "^self-intersections," boxes/castability.csv)
+pairs=$(echo "$row" | cut -d, -f2)
+if [[ "$row" == *",refused" ]] && [ "$pairs" -gt 0 ]; then
+  echo "ok   overlapping boxes: $pairs intersecting triangle pairs, refused"
+else
+  fail "overlapping boxes: $row"
+fi
+
+# A finished run: check-design reads its final design.
+sphere run 0.9 2 > run.prm
+"$softopt" optimize run.prm > run.log 2>&1 || { echo "FAIL optimize"; cat run.log; exit 1; }
+grep -q "minimum wall thickness" run.log && echo "ok   optimize ends with the castability checks" ||
+  fail "optimize printed no castability checks"
+rm run/castability.csv
+"$softopt" check-design run.prm > check_run.log 2>&1 || { echo "FAIL check-design run"; cat check_run.log; exit 1; }
+grep -q "The final design of <run> (design.msh" check_run.log && [ -f run/castability.csv ] &&
+  echo "ok   check-design on a finished run checks design.msh" ||
+  { fail "check-design on a finished run"; cat check_run.log; }
+exit $failures

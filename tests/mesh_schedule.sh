@@ -1,0 +1,129 @@
+#!/bin/bash
+# A mesh that refines as the design settles (issue 19 item 4), on the thick
+# sphere octant of verification.sh (objective: the mean u_x of the outer
+# surface; 0.5 mm, then 0.2 mm from iteration 2 on):
+#  1. At iteration 2 the design is meshed anew at 0.2 mm, the states carry
+#     over (Newton starts from them: "(warm)") and the check from rest finds
+#     the same branch.
+#  2. The objective on the new mesh differs from that of the same design on
+#     the fixed 0.5 mm mesh by no more than twice the 0.5 mm mesh's own error
+#     against the closed form (at iteration 0, the sphere itself).
+#  3. A restart from the checkpoint of iteration 3 (on the new mesh) repeats
+#     the uninterrupted run's rows.
+# Usage: mesh_schedule.sh SOFTOPT_EXECUTABLE SOURCE_DIR
+softopt=$1
+source=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+case_file() { # OUTPUT_DIRECTORY ITERATIONS SCHEDULE
+  cat <<PRM
+set Output directory = $1
+set Print timings = false
+subsection Output
+  set VTU output = none
+end
+subsection Geometry
+  set Mesh file = $source/meshes/sphere_octant.geo
+  set Mesh size = 0.5
+  set Dirichlet boundaries = 1: x; 2: y; 3: z
+  set Pressure boundary ids = 4
+  set Design boundary ids = 5
+end
+subsection Material
+  set Young's modulus = 3
+  set Poisson's ratio = 0.4999
+end
+subsection Loading
+  set Pressure = 302
+end
+subsection Optimization
+  set Maximum iterations = $2
+  set Mesh size schedule = $3
+  set Checkpoint interval = 3
+  set Final analysis steps = 1
+  set Design bound = 0.05
+end
+subsection Objective 1
+  set Direction field = constant
+  set Direction = 1, 0, 0
+  set Weight = 1
+end
+PRM
+}
+failures=0
+fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+run() { # NAME ARGUMENTS...
+  local name=$1
+  shift
+  "$softopt" "$@" > "$name.log" 2>&1 || { echo "FAIL softopt $*"; cat "$name.log"; exit 1; }
+}
+
+case_file scheduled 5 "0.5 @ 0, 0.2 @ 2" > scheduled.prm
+case_file fixed 3 "" > fixed.prm
+run scheduled optimize scheduled.prm
+run fixed optimize fixed.prm
+
+line=$(grep "iteration 2: the schedule's mesh size 0.2 mm" scheduled.log)
+if [[ "$line" == *"the states carry over"* ]]; then
+  echo "ok   iteration 2: the schedule's mesh size 0.2 mm, the states carry over"
+else
+  fail "no new mesh with the states carried over at iteration 2: $line"; cat scheduled.log
+fi
+row=$(grep "^iteration    2 " scheduled.log)
+[[ "$row" == *"(warm)"* ]] && echo "ok   Newton on the new mesh starts from the carried states" ||
+  fail "Newton on the new mesh did not start from the carried states: $row"
+[[ "$row" == *"from rest: same branch"* ]] && echo "ok   the check from rest on the new mesh finds the same branch" ||
+  fail "the check from rest on the new mesh: $row"
+
+/usr/bin/python3 - scheduled/history.csv fixed/history.csv <<'PY' || failures=$((failures + 1))
+import csv, sys
+E, nu, p, A, B = 3.0, 0.4999, 0.302, 1.0, 2.0
+mu = E / (2 * (1 + nu))
+f = lambda s: 2 / s + 1 / (2 * s**4)
+lb = lambda la: (1 + (la**3 - 1) * (A / B)**3) ** (1 / 3)
+lo, hi = 1.0, 1.5
+for _ in range(200):  # p / mu = f(lambda_b) - f(lambda_a), ascending
+    m = (lo + hi) / 2
+    lo, hi = (m, hi) if f(lb(m)) - f(m) < p / mu else (lo, m)
+exact = (lb(lo) - 1) * B / 2
+scheduled = list(csv.DictReader(open(sys.argv[1])))
+fixed = list(csv.DictReader(open(sys.argv[2])))
+cells = [int(r["cells"]) for r in scheduled]
+ok = cells[0] == cells[1] and cells[2] > 2 * cells[1] and len(set(cells[2:])) == 1
+print(("ok  " if ok else "FAIL") + " cells per iteration %s: the finer mesh from iteration 2 on" % cells)
+mesh_error = abs(float(scheduled[0]["g_1"]) / exact - 1)
+change = abs(float(scheduled[2]["g_1"]) / float(fixed[2]["g_1"]) - 1)
+ok2 = change < 2 * mesh_error
+print(("ok  " if ok2 else "FAIL") +
+      " iteration 2's design: g_1 %.10f at 0.2 mm, %.10f at 0.5 mm, difference %.1e (< 2 x %.1e, the 0.5 mm mesh's error at iteration 0)"
+      % (float(scheduled[2]["g_1"]), float(fixed[2]["g_1"]), change, mesh_error))
+same = all(scheduled[k]["g_1"] == fixed[k]["g_1"] for k in (0, 1))
+print(("ok  " if same else "FAIL") + " iterations 0 and 1 equal to the fixed mesh's")
+sys.exit(0 if ok and ok2 and same else 1)
+PY
+
+# A run that stops after iteration 3, then goes on from its checkpoint.
+case_file scheduled_restart 4 "0.5 @ 0, 0.2 @ 2" > restart.prm
+run first optimize restart.prm
+case_file scheduled_restart 5 "0.5 @ 0, 0.2 @ 2" > restart.prm
+run second optimize restart.prm --restart
+grep -q "Restarting at iteration 3" second.log || fail "the restart did not start at iteration 3: $(head -3 second.log)"
+/usr/bin/python3 - scheduled/history.csv scheduled_restart/history.csv <<'PY' || failures=$((failures + 1))
+import csv, sys
+a = list(csv.DictReader(open(sys.argv[1])))
+b = list(csv.DictReader(open(sys.argv[2])))
+worst = max(abs(float(b[k]["g_1"]) / float(a[k]["g_1"]) - 1) for k in range(5))
+ok = len(b) == 5 and worst < 1e-9 and b[4]["cells"] == a[4]["cells"]
+print(("ok  " if ok else "FAIL") + " the restart on the new mesh repeats rows 3 and 4: largest difference %.1e (< 1e-9), %s cells" % (worst, b[4]["cells"]))
+sys.exit(0 if ok else 1)
+PY
+
+# Bad input: a schedule that is not "size @ iteration".
+case_file bad 3 "0.3 at 2" > bad.prm
+if "$softopt" optimize bad.prm > bad.log 2>&1 || ! grep -q 'is not "size @ iteration"' bad.log; then
+  fail "a malformed schedule"; cat bad.log
+else
+  echo "ok   a malformed schedule is refused: $(grep -o '"0.3 at 2" is not[^(]*' bad.log | head -1)"
+fi
+exit $failures
