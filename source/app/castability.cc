@@ -39,7 +39,7 @@ namespace softopt
 
 
 
-  bool
+  void
   check_castability(const Settings            &settings,
                     const DesignConfiguration &design,
                     const OutputDirectory     &out,
@@ -56,24 +56,39 @@ namespace softopt
                   comm);
     pcout << "Castability (castability.csv):" << std::endl;
 
-    // Boundaries held in some directions only are symmetry planes.
     std::set<types::boundary_id> mirrors;
     for (const auto &[id, fixed] : settings.geometry.dirichlet_boundaries)
-      if (!(fixed[0] && fixed[1] && fixed[2]))
+      if (settings.geometry.is_symmetry_plane(id))
         mirrors.insert(id);
     const auto wall = wall_thickness(design, mirrors);
+    std::string error;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      write_wall_thickness_vtu(wall, out.file("wall_thickness.vtu"));
+      try
+        {
+          write_wall_thickness_vtu(wall, out.file("wall_thickness.vtu"));
+        }
+      catch (const std::exception &e)
+        {
+          error = e.what();
+        }
+    error = Utilities::MPI::broadcast(comm, error, 0); // thrown on every rank
+    AssertThrow(error.empty(), ExcMessage(error));
     const double minimum = settings.castability.minimum_wall_thickness;
-    const bool   thin    = wall.minimum < minimum;
+    // A ray without an opposite wall: the surface is not closed there.
+    const bool thin = wall.minimum < minimum || wall.n_without_opposite > 0;
     std::vector<std::string> row{"minimum wall thickness", CsvWriter::format(wall.minimum), "mm"};
     for (const auto &x : place(wall.where))
       row.push_back(x);
     row.push_back(thin ? "warning" : "ok");
     csv.add_row(row);
     pcout << "  minimum wall thickness " << std::setprecision(4) << wall.minimum << " mm at ("
-          << wall.where << ") mm: " << (thin ? "warning, below " : "ok, at least ") << minimum
+          << wall.where << ") mm: "
+          << (wall.minimum < minimum ? "warning, below " : "ok, at least ") << minimum
           << " mm (Minimum wall thickness; the field is in wall_thickness.vtu)" << std::endl;
+    if (wall.n_without_opposite > 0)
+      pcout << "  warning: from " << wall.n_without_opposite << " surface nodes the "
+            << "inward ray found no opposite wall (-1 in wall_thickness.vtu): is the "
+            << "surface closed?" << std::endl;
 
     const auto crossing = design_self_intersections(design);
     row = {"self-intersections", std::to_string(crossing.pairs), "triangle pairs"};
@@ -87,7 +102,6 @@ namespace softopt
             << ") mm: refused, the design cannot be cast" << std::endl;
     else
       pcout << "none, ok" << std::endl;
-    return crossing.pairs > 0;
   }
 
 
@@ -97,7 +111,10 @@ namespace softopt
   {
     ConditionalOStream pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0);
     const std::string  design_mesh = settings.output_directory + "/design.msh";
-    const bool         finished    = std::filesystem::exists(design_mesh);
+    const bool         finished    = Utilities::MPI::broadcast( // the same mesh on every rank
+      comm,
+      Utilities::MPI::this_mpi_process(comm) == 0 && std::filesystem::exists(design_mesh),
+      0);
     const OutputDirectory out(settings.output_directory, comm);
     const AnalysisBody    body(settings, comm, finished ? design_mesh : "");
     pcout << (finished ? "The final design of <" + settings.output_directory + "> (design.msh, " :

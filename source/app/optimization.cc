@@ -151,6 +151,9 @@ namespace softopt
       prm.set("Mesh file", "design.msh");
       prm.set("Mesh parameters", "");
       prm.leave_subsection();
+      prm.enter_subsection("Optimization"); // design.msh is the last mesh
+      prm.set("Mesh size schedule", "");
+      prm.leave_subsection();
       std::ostringstream text;
       prm.print_parameters(text, ParameterHandler::PRM);
       out.write_text("design.prm", text.str());

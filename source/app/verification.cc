@@ -75,6 +75,11 @@ namespace softopt
   double
   optimization_mesh_size(const Settings &settings, const DesignConfiguration &design)
   {
+    // After a schedule, the last size the run reached (if it ran that far).
+    const auto &schedule = settings.optimization.mesh_size_schedule;
+    for (auto entry = schedule.rbegin(); entry != schedule.rend(); ++entry)
+      if (entry->first < settings.optimization.maximum_iterations)
+        return entry->second;
     const std::string &file = settings.geometry.mesh_file;
     if (file.size() > 4 && file.substr(file.size() - 4) == ".geo")
       return settings.geometry.mesh_size;

@@ -399,4 +399,13 @@ namespace softopt
         serial, comm);
     triangulation.create_triangulation(description);
   }
+  bool
+  Geometry::is_symmetry_plane(const types::boundary_id id) const
+  {
+    const auto d = dirichlet_boundaries.find(id);
+    if (d == dirichlet_boundaries.end())
+      return false;
+    const auto n_fixed = std::count(d->second.begin(), d->second.end(), true);
+    return n_fixed > 0 && n_fixed < 3;
+  }
 } // namespace softopt

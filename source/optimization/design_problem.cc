@@ -427,9 +427,14 @@ namespace softopt
     auto old_design        = std::move(design);
     auto old_problem       = std::move(problem);
     const std::string old_file = mesh_file;
+    StateTransfer     transfer;
     try
       {
         build(msh_file);
+        // The states carry over as Newton's start on the new mesh; psi, d
+        // and MMA start afresh (X_o is the design), the secant has no
+        // history.
+        transfer = transfer_states(*old_problem, x.states, *problem, design->get_mapping());
       }
     catch (...)
       {
@@ -440,9 +445,6 @@ namespace softopt
         filter.setup(*design, parameters.geometry);
         throw;
       }
-    // The states carry over as Newton's start on the new mesh; psi, d and
-    // MMA start afresh (X_o is the design), the secant has no history.
-    auto transfer = transfer_states(*old_problem, x.states, *problem, design->get_mapping());
     earlier_meshes_statistics += old_problem->get_statistics();
     old_problem.reset(); // before the DoFs and the mesh it lives on
     old_design.reset();

@@ -196,9 +196,9 @@ namespace softopt
           AssertThrow(size > 0 && std::isfinite(size),
                       ExcMessage(where + ": the size in \"" + item +
                                  "\" must be positive (mm)."));
-          AssertThrow(k >= 0,
+          AssertThrow(k >= 0 && k < 100000000,
                       ExcMessage(where + ": the iteration in \"" + item +
-                                 "\" must be 0 or more."));
+                                 "\" must be 0 or more (and below 10^8)."));
           AssertThrow(schedule.empty() || long(schedule.back().first) < k,
                       ExcMessage(where + ": the iterations must ascend, but \"" +
                                  item + "\" follows iteration " +
@@ -212,12 +212,13 @@ namespace softopt
 
 
   double
-  OptimizationParameters::scheduled_mesh_size(const unsigned int k) const
+  OptimizationParameters::scheduled_mesh_size(const unsigned int k, const long mesh_made_at) const
   {
-    for (const auto &[iteration, size] : mesh_size_schedule)
-      if (k > 0 && iteration == k)
-        return size;
-    return 0;
+    double size = 0;
+    for (const auto &[iteration, h] : mesh_size_schedule)
+      if (iteration > 0 && iteration <= k)
+        size = long(iteration) > mesh_made_at ? h : 0;
+    return size;
   }
 
 

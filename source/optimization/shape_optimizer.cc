@@ -60,7 +60,7 @@ namespace softopt
         // the iteration's mesh update as the uninterrupted run does.
         if (k > first && opt.every(k, opt.checkpoint_interval))
           Checkpoint::save(out.path(), k, x);
-        const double new_size = opt.scheduled_mesh_size(k); // 0: none at k
+        const double new_size = opt.scheduled_mesh_size(k, mesh_made_at(x)); // 0: none
         const bool   mesh_update = opt.every(k, opt.mesh_update_interval) ||
                                  new_size > 0 || elements_collapsing(k, x);
         auto before_update = mesh_update ? update_mesh(k, x, new_size) : // X_o <- X_o + psi(d), d <- 0
@@ -103,6 +103,20 @@ namespace softopt
       write_snapshot(k - 1, x);
     return "reached the maximum number of iterations (" +
            std::to_string(opt.maximum_iterations) + ")";
+  }
+
+
+
+  long
+  ShapeOptimizer::mesh_made_at(const DesignIterate &x)
+  {
+    // A new mesh is out/mesh-<k>.msh (update_mesh); the first one is not.
+    const std::string stem = std::filesystem::path(x.mesh_file).stem().string();
+    if (stem.rfind("mesh-", 0) != 0)
+      return -1;
+    char      *end = nullptr;
+    const long k   = std::strtol(stem.c_str() + 5, &end, 10);
+    return *end == '\0' ? k : -1;
   }
 
 
@@ -174,7 +188,7 @@ namespace softopt
               << " tetrahedra (" << file << "); "
               << (n_outside == 0 ?
                     "the states carry over" :
-                    std::to_string(n_outside) + " new nodes outside the old "
+                    std::to_string(n_outside) + " new points outside the old "
                     "mesh: the states follow the path from zero")
               << std::endl;
         return std::nullopt;

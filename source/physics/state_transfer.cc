@@ -197,7 +197,12 @@ namespace softopt
         all_points.insert(all_points.end(), parts[r].begin(), parts[r].end());
       }
     const auto locations = locate_here(old_problem, all_points);
-    std::vector<std::pair<double, int>> best(all_points.size());
+    struct DoubleInt // MPI_DOUBLE_INT's layout
+    {
+      double value;
+      int    rank;
+    };
+    std::vector<DoubleInt> best(all_points.size());
     for (std::size_t i = 0; i < all_points.size(); ++i)
       best[i] = {locations[i].outside, rank};
     MPI_Allreduce(MPI_IN_PLACE, best.data(), best.size(), MPI_DOUBLE_INT, MPI_MINLOC, comm);
@@ -205,8 +210,8 @@ namespace softopt
     StateTransfer     result;
     for (std::size_t i = 0; i < all_points.size(); ++i)
       {
-        won[i] = best[i].second == rank && best[i].first <= max_outside;
-        result.n_not_found += best[i].first > max_outside;
+        won[i] = best[i].rank == rank && best[i].value <= max_outside;
+        result.n_not_found += best[i].value > max_outside;
       }
     if (result.n_not_found > 0)
       return result;

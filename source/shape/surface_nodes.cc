@@ -28,17 +28,6 @@ namespace softopt
       return nodes;
     }
 
-    /** Symmetry planes (Dirichlet boundaries fixing only some components)
-     * are cuts through the body, not its surface. */
-    bool
-    is_symmetry_plane(const Geometry &geometry, const types::boundary_id id)
-    {
-      const auto d = geometry.dirichlet_boundaries.find(id);
-      if (d == geometry.dirichlet_boundaries.end())
-        return false;
-      const auto n_fixed = std::count(d->second.begin(), d->second.end(), true);
-      return n_fixed > 0 && n_fixed < 3;
-    }
   } // namespace
 
 
@@ -68,7 +57,7 @@ namespace softopt
           for (const unsigned int f : cell->face_indices())
             {
               if (!cell->face(f)->at_boundary() ||
-                  is_symmetry_plane(geometry, cell->face(f)->boundary_id()))
+                  geometry.is_symmetry_plane(cell->face(f)->boundary_id()))
                 continue;
               double longest_edge = 0;
               for (unsigned int i = 0; i < 3; ++i)

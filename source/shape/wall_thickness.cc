@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <map>
+#include <set>
 #include <sstream>
 
 namespace softopt
@@ -44,31 +45,39 @@ namespace softopt
         }
     }
 
-    /** The thickness at every node off the mirror planes: the path along
-     * the inward normal to the first triangle of the body's surface, not
-     * one of the node's own. A ray that meets a mirror plane (a symmetry
-     * boundary: the body goes on beyond it) is reflected there and goes on,
-     * as it would in the whole body. */
+    /** The thickness at every node of the part's surface: the path along
+     * the inward normal to the first triangle of the part's surface, not
+     * one of the node's own. A mirror plane (a symmetry boundary, boundary
+     * ids @p mirrors) is a cut: the body goes on beyond it. No ray starts
+     * on one; a node on its rim takes the normal projected onto the plane
+     * (the whole body's normal there, by symmetry) and its ray ignores
+     * that plane; a ray that meets a plane is reflected and goes on. */
     void
-    shoot_rays(WallThickness &wall, const std::vector<bool> &mirror)
+    shoot_rays(WallThickness                         &wall,
+               const std::vector<types::boundary_id> &ids,
+               const std::set<types::boundary_id>    &mirrors)
     {
       const auto point = [&](const Point<3> &p) { return Kernel::Point_3(p[0], p[1], p[2]); };
-      Triangles                              triangles;
-      std::vector<Tensor<1, 3>>              face_normal;
-      std::vector<Tensor<1, 3>>              normal(wall.nodes.size());
-      std::vector<std::vector<unsigned int>> around(wall.nodes.size());
+      const auto is_mirror = [&](const unsigned int t) { return mirrors.count(ids[t]) > 0; };
+      Triangles                                                triangles;
+      std::vector<Tensor<1, 3>>                                unit_normal;
+      std::vector<Tensor<1, 3>>                                normal(wall.nodes.size());
+      std::vector<std::vector<unsigned int>>                   around(wall.nodes.size());
+      std::map<types::boundary_id, std::vector<unsigned int>> on_plane; // triangles per mirror
       for (unsigned int t = 0; t < wall.triangles.size(); ++t)
         {
           const auto &[a, b, c] = wall.triangles[t];
           triangles.emplace_back(point(wall.nodes[a]), point(wall.nodes[b]), point(wall.nodes[c]));
-          // Area-weighted outward normal (the triangles are counter-clockwise
-          // seen from outside).
-          face_normal.push_back(
-            cross_product_3d(wall.nodes[b] - wall.nodes[a], wall.nodes[c] - wall.nodes[a]));
+          // Area-weighted outward normal (counter-clockwise from outside).
+          const Tensor<1, 3> n =
+            cross_product_3d(wall.nodes[b] - wall.nodes[a], wall.nodes[c] - wall.nodes[a]);
+          unit_normal.push_back(n / n.norm());
+          if (is_mirror(t))
+            on_plane[ids[t]].push_back(t);
           for (const unsigned int v : wall.triangles[t])
             {
-              if (!mirror[t])
-                normal[v] += face_normal.back();
+              if (!is_mirror(t))
+                normal[v] += n;
               around[v].push_back(t);
             }
         }
@@ -77,18 +86,35 @@ namespace softopt
       wall.thickness.assign(wall.nodes.size(), std::numeric_limits<double>::infinity());
       for (unsigned int i = 0; i < wall.nodes.size(); ++i)
         {
-          if (normal[i].norm() == 0) // on mirror planes only
+          if (normal[i].norm() == 0) // on mirror planes only: inside the body
             continue;
-          Point<3>                  from      = wall.nodes[i];
-          Tensor<1, 3>              direction = -normal[i] / normal[i].norm();
-          std::vector<unsigned int> skip      = around[i];
-          double                    length    = 0;
-          for (unsigned int reflection = 0; reflection <= 3; ++reflection)
+          std::vector<unsigned int> skip = around[i];
+          Tensor<1, 3>              into_body; // away from the planes the node is on
+          for (const unsigned int t : around[i])
+            if (is_mirror(t))
+              {
+                normal[i] -= (normal[i] * unit_normal[t]) * unit_normal[t];
+                into_body -= unit_normal[t];
+                skip.insert(skip.end(), on_plane[ids[t]].begin(), on_plane[ids[t]].end());
+              }
+          Point<3>     from      = wall.nodes[i];
+          Tensor<1, 3> direction = -normal[i] / normal[i].norm();
+          // A ray exactly in a plane runs along the faces of the AABB boxes,
+          // where CGAL's slab test is undecided: tilt it into the body by
+          // 1e-6 rad, which changes the thickness by 1e-12 relative.
+          if (into_body.norm() > 0)
+            {
+              direction += 1e-6 * into_body / into_body.norm();
+              direction /= direction.norm();
+            }
+          double       length    = 0;
+          for (unsigned int reflection = 0; reflection <= mirrors.size(); ++reflection)
             {
               const Kernel::Ray_3 ray(point(from),
                                       Kernel::Vector_3(direction[0], direction[1], direction[2]));
+              std::sort(skip.begin(), skip.end());
               const auto own = [&](const Triangles::const_iterator &id) {
-                return std::find(skip.begin(), skip.end(), id - triangles.begin()) != skip.end();
+                return std::binary_search(skip.begin(), skip.end(), id - triangles.begin());
               };
               const auto hit = tree.first_intersection(ray, own);
               if (!hit)
@@ -97,24 +123,30 @@ namespace softopt
               if (const auto *p = boost::get<Kernel::Point_3>(&hit->first))
                 at = Point<3>(p->x(), p->y(), p->z());
               else if (const auto *segment = boost::get<Kernel::Segment_3>(&hit->first))
-                at = Point<3>(segment->source().x(), segment->source().y(), segment->source().z());
+                { // along a triangle: its end nearer the ray's start
+                  const Point<3> a(segment->source().x(), segment->source().y(), segment->source().z());
+                  const Point<3> b(segment->target().x(), segment->target().y(), segment->target().z());
+                  at = a.distance(from) < b.distance(from) ? a : b;
+                }
               const unsigned int t = hit->second - triangles.begin();
               length += at.distance(from);
-              if (!mirror[t])
+              if (!is_mirror(t))
                 {
                   wall.thickness[i] = length;
                   break;
                 }
-              const Tensor<1, 3> n = face_normal[t] / face_normal[t].norm();
-              direction -= 2 * (direction * n) * n;
+              // Reflected: it leaves that plane and cannot meet it again.
+              direction -= 2 * (direction * unit_normal[t]) * unit_normal[t];
               from = at;
-              skip = {t};
+              skip.insert(skip.end(), on_plane[ids[t]].begin(), on_plane[ids[t]].end());
             }
           if (wall.thickness[i] < wall.minimum)
             {
               wall.minimum = wall.thickness[i];
               wall.where   = wall.nodes[i];
             }
+          else if (!std::isfinite(wall.thickness[i]))
+            ++wall.n_without_opposite;
         }
     }
   } // namespace
@@ -128,16 +160,24 @@ namespace softopt
     std::vector<types::boundary_id> ids;
     const auto    corners = gathered_boundary_triangles(design, &ids); // design.stl's
     WallThickness wall;
+    std::string   error;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
-        index_surface(corners, wall);
-        std::vector<bool> mirror;
-        for (const auto id : ids)
-          mirror.push_back(mirrors.count(id) > 0);
-        shoot_rays(wall, mirror);
+        try
+          {
+            index_surface(corners, wall);
+            shoot_rays(wall, ids, mirrors);
+          }
+        catch (const std::exception &e)
+          {
+            error = std::string("The wall thickness could not be measured: ") + e.what();
+          }
       }
-    wall.minimum = Utilities::MPI::broadcast(comm, wall.minimum, 0);
-    wall.where   = Utilities::MPI::broadcast(comm, wall.where, 0);
+    error = Utilities::MPI::broadcast(comm, error, 0); // thrown on every rank
+    AssertThrow(error.empty(), ExcMessage(error));
+    wall.minimum            = Utilities::MPI::broadcast(comm, wall.minimum, 0);
+    wall.where              = Utilities::MPI::broadcast(comm, wall.where, 0);
+    wall.n_without_opposite = Utilities::MPI::broadcast(comm, wall.n_without_opposite, 0);
     return wall;
   }
 

@@ -33,10 +33,9 @@ namespace softopt
    * and wall_thickness.vtu to look at in ParaView) and the
    * self-intersections of its surface (refused if any). Writes
    * castability.csv (check,value,unit,x_mm,y_mm,z_mm,verdict) into @p out
-   * and prints one line per check. Returns whether the design is refused.
-   * Collective.
+   * and prints one line per check. Collective.
    */
-  bool
+  void
   check_castability(const Settings            &settings,
                     const DesignConfiguration &design,
                     const OutputDirectory     &out,

@@ -55,6 +55,12 @@ namespace softopt
     /** Fixed displacement components on each Dirichlet boundary id. */
     std::map<types::boundary_id, std::array<bool, 3>> dirichlet_boundaries;
 
+    /** Whether boundary @p id is a symmetry plane (a Dirichlet boundary
+     * fixing only some components): a cut through the body, not its
+     * surface. */
+    bool
+    is_symmetry_plane(const types::boundary_id id) const;
+
     /** Boundary ids of the closed cavity's walls (the follower pressure). */
     std::vector<types::boundary_id> pressure_boundary_ids;
 

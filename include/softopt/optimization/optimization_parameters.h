@@ -55,10 +55,13 @@ namespace softopt
      * given on, ascending in iteration (may start at 0: the first mesh). */
     std::vector<std::pair<unsigned int, double>> mesh_size_schedule;
 
-    /** The element size the schedule asks for from iteration @p k > 0 on,
-     * in mm (0: the schedule changes nothing at @p k). */
+    /** The element size the schedule asks for at iteration @p k > 0, in
+     * mm, if its latest entry at or before @p k (after 0) is later than
+     * @p mesh_made_at, the iteration the current mesh was made at (-1: the
+     * first mesh); else 0. So a new mesh that failed at its iteration is
+     * tried again at the next one. */
     double
-    scheduled_mesh_size(const unsigned int k) const;
+    scheduled_mesh_size(const unsigned int k, const long mesh_made_at) const;
 
     /** Whether iteration @p k > 0 is one of every @p interval (0: none). */
     static bool

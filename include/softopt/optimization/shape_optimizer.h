@@ -64,6 +64,11 @@ namespace softopt
     std::optional<DesignIterate>
     update_mesh(const unsigned int k, DesignIterate &x, const double mesh_size = 0);
 
+    /** The iteration whose update made the mesh @p x is on (its file
+     * mesh-<k>.msh), -1 for the first mesh. */
+    static long
+    mesh_made_at(const DesignIterate &x);
+
     /** Whether the accepted design of @p x has flattened an element below
      * "Remesh below quality" since the last mesh update, on a mesh that
      * was above it: the mesh update then comes forward to iteration @p k

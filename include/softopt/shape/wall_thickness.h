@@ -28,6 +28,9 @@ namespace softopt
     /** The smallest thickness and the node where it occurs. */
     double   minimum = std::numeric_limits<double>::infinity();
     Point<3> where;
+    /** Nodes of the part's surface whose ray found no opposite wall (none
+     * on a closed surface; a sign of a surface that is not). */
+    unsigned int n_without_opposite = 0;
   };
 
   /**
@@ -36,8 +39,9 @@ namespace softopt
    * the inward normal to the first surface triangle it meets (CGAL's AABB
    * tree, skipping the triangles around the node). Faces with a boundary
    * id in @p mirrors are symmetry planes, not surfaces of the part: no ray
-   * starts there, and a ray that meets one is reflected (the body goes on
-   * beyond it). On a thick sphere octant the thickness is B - A at every
+   * starts there, a node on their rim takes the normal projected onto the
+   * plane, and a ray that meets one is reflected (the body goes on beyond
+   * it). On a thick sphere octant the thickness is B - A at every
    * node of its spherical surfaces. Collective; the result is on rank 0
    * (minimum and where on every rank).
    */
