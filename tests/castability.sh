@@ -7,7 +7,10 @@
 #     the verdict against Minimum wall thickness both ways.
 #  2. A body whose surface passes through itself (bad_input's overlapping
 #     boxes): the self-intersection row counts the pairs and refuses it.
-#  3. check-design on a finished run checks its design.msh.
+#  3. check-design on a finished run checks its design.msh; the sphere's
+#     final analysis has no deformed self-contact.
+#  4. Walls that touch (inputs/slot.geo): the analysis finds the pressure
+#     where the deformed surface first passes through itself.
 # Usage: castability.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
@@ -78,4 +81,53 @@ rm run/castability.csv
 grep -q "The final design of <run> (design.msh" check_run.log && [ -f run/castability.csv ] &&
   echo "ok   check-design on a finished run checks design.msh" ||
   { fail "check-design on a finished run"; cat check_run.log; }
+grep -q "^deformed self-contact,,kPa,,,,ok$" run/castability.csv &&
+  echo "ok   deformed self-contact: none along the sphere's final analysis" ||
+  { fail "no deformed self-contact row"; cat run/castability.csv; }
+
+# Walls that touch: a block with a cavity and, beyond a wall 0.6 mm thick,
+# a slot 0.4 mm wide (inputs/slot.geo). The first step whose deformed
+# surface passes through itself (load_path.csv, self_contact) against the
+# gap between two tracked nodes facing each other across the slot, an
+# independent measure: it must close at that step or the next.
+cat > slot.prm <<PRM
+set Output directory = slot
+set Print timings = false
+subsection Output
+  set VTU output = none
+  set Tracked points = wall: 5, 5.6, 5; far: 5, 6, 5
+end
+subsection Geometry
+  set Mesh file = $source/tests/inputs/slot.geo
+  set Mesh size = 1.5
+  set Dirichlet boundaries = 1: xyz
+  set Pressure boundary ids = 2
+  set Design boundary ids = 3
+end
+subsection Material
+  set Young's modulus = 1.2
+  set Poisson's ratio = 0.49
+end
+subsection Loading
+  set Pressure = 15
+  set Initial load increment = 0.05
+  set Maximum load increment = 0.05
+end
+PRM
+"$softopt" analyze slot.prm > slot.log 2>&1 || { echo "FAIL analyze slot"; cat slot.log; exit 1; }
+grep -q "warning: at .* kPa the deformed surface passes through itself" slot.log &&
+  echo "ok   the analysis warns where the walls touch" || fail "no contact warning"
+/usr/bin/python3 - slot <<'PY' || failures=$((failures + 1))
+import csv, sys
+d = sys.argv[1]
+path = list(csv.DictReader(open(d + "/load_path.csv")))
+tracked = list(csv.DictReader(open(d + "/tracked_points.csv")))
+contact = next(int(r["step"]) for r in path if r["self_contact"] == "1")
+gap = [0.4 + float(r["wall_Y_mm"]) - 5.6 - (float(r["wall_uy_mm"]) - float(r["far_uy_mm"])) for r in tracked]
+closed = next(k for k, g in enumerate(gap) if g <= 0)
+ok = closed - 1 <= contact <= closed
+print(("ok  " if ok else "FAIL") + " walls touch at step %d (%s kPa); the tracked gap %.3f mm there closes at step %d (%s kPa): within one step" %
+      (contact, path[contact]["pressure_kPa"], gap[contact], closed, path[closed]["pressure_kPa"]))
+sys.exit(0 if ok else 1)
+PY
 exit $failures

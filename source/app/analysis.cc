@@ -3,6 +3,7 @@
 #include <deal.II/distributed/fully_distributed_tria.h>
 
 #include <softopt/app/analysis.h>
+#include <softopt/shape/self_intersection.h>
 #include <softopt/io/output_directory.h>
 #include <softopt/functionals/design_surface.h>
 #include <softopt/functionals/direction_field.h>
@@ -149,8 +150,11 @@ namespace softopt
     // its target were the current load factor).
     for (const auto *f : functionals)
       columns.push_back(f->name());
-    for (const auto *c :
-         {"newton_iterations", "residual_norm_N", "at_target", "limit_point"})
+    for (const auto *c : {"newton_iterations",
+                          "residual_norm_N",
+                          "at_target",
+                          "limit_point",
+                          "self_contact"})
       columns.emplace_back(c);
     CsvWriter load_path(directory + "/load_path.csv", columns, comm);
     PvdSeries pvd(directory + "/solution.pvd", comm);
@@ -178,6 +182,7 @@ namespace softopt
 
     std::vector<Extrema> extrema(functionals.size());
     unsigned int         vtu_counter = 0;
+    bool                 in_contact  = false;
     const auto   record      = [&](const PathFollowing::PathPoint  &point,
                             const HyperelasticProblem::Vector &state) {
       const double volume           = cavity_volume(problem, design, state);
@@ -204,6 +209,12 @@ namespace softopt
       row.push_back(CsvWriter::format(point.residual_norm));
       row.push_back(point.at_target ? "1" : "0");
       row.push_back(point.limit_point ? "1" : "0");
+      // Walls that touch: the deformed surface passes through itself, as
+      // the model has no contact (castability.csv's deformed self-contact).
+      const auto               u = problem.ghosted(state);
+      const Deformation        deformed{problem.get_dof_handler(), u};
+      const SelfIntersection   contact = design_self_intersections(design, &deformed);
+      row.push_back(contact.pairs > 0 ? "1" : "0");
       load_path.add_row(row);
       if (tracked)
         {
@@ -225,6 +236,13 @@ namespace softopt
             << " mm^3  mean u_x " << mean_ux << " mm  mean u_in " << mean_in
             << " mm  Newton " << point.newton_iterations
             << (point.limit_point ? "  (limit point)" : "") << std::endl;
+      if (contact.pairs > 0 && !in_contact)
+        pcout << "  warning: at " << p_kPa << " kPa the deformed surface passes "
+              << "through itself (" << contact.pairs << " pairs of triangles, one near ("
+              << contact.where << ") mm): walls in contact, which the model does "
+              << "not resolve; its results beyond this pressure are not the part's"
+              << std::endl;
+      in_contact = contact.pairs > 0;
       if (settings.loading.maximum_volume_ratio > 0 &&
           volume > settings.loading.maximum_volume_ratio * initial_volume)
         return std::string("the cavity volume exceeded ") +

@@ -5,7 +5,9 @@
 #include <softopt/shape/self_intersection.h>
 #include <softopt/shape/wall_thickness.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <iomanip>
 
@@ -36,6 +38,35 @@ namespace softopt
     minimum_wall_thickness = prm.get_double("Minimum wall thickness");
     prm.leave_subsection();
   }
+
+
+
+  namespace
+  {
+    /** The pressure of the first row of @p load_path (a load_path.csv)
+     * whose self_contact is 1; "" if none, "none" if there is no such file
+     * or column (no final analysis yet). */
+    std::string
+    first_contact_pressure(const std::string &load_path)
+    {
+      std::ifstream in(load_path);
+      std::string   line;
+      if (!std::getline(in, line))
+        return "none";
+      const auto header   = Utilities::split_string_list(line, ',');
+      const auto column   = std::find(header.begin(), header.end(), "self_contact");
+      const auto pressure = std::find(header.begin(), header.end(), "pressure_kPa");
+      if (column == header.end() || pressure == header.end())
+        return "none";
+      while (std::getline(in, line))
+        {
+          const auto fields = Utilities::split_string_list(line, ',');
+          if (fields.size() == header.size() && fields[column - header.begin()] == "1")
+            return fields[pressure - header.begin()];
+        }
+      return "";
+    }
+  } // namespace
 
 
 
@@ -102,6 +133,25 @@ namespace softopt
             << ") mm: refused, the design cannot be cast" << std::endl;
     else
       pcout << "none, ok" << std::endl;
+
+    // The first pressure of the final analysis at which the deformed
+    // surface passes through itself (load_path.csv, self_contact).
+    std::string first_contact;
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      first_contact = first_contact_pressure(out.file("final_analysis/load_path.csv"));
+    first_contact = Utilities::MPI::broadcast(comm, first_contact, 0);
+    if (first_contact != "none")
+      {
+        const bool touches = !first_contact.empty();
+        csv.add_row({"deformed self-contact", first_contact, "kPa", "", "", "",
+                     touches ? "warning" : "ok"});
+        pcout << "  deformed self-contact: "
+              << (touches ? "walls touch from " + first_contact +
+                              " kPa on (final_analysis/load_path.csv, self_contact): "
+                              "warning, the model has no contact beyond" :
+                            std::string("none along the final analysis, ok"))
+              << std::endl;
+      }
   }
 
 

@@ -219,7 +219,6 @@ namespace softopt
           << " (the final design as a quadratic mesh, and the case on it: "
              "\"softopt analyze "
           << out.file("design.prm") << "\")" << std::endl;
-    check_castability(settings, problem.design_configuration(), out, pcout);
 
     pcout << "\nForward analysis of the final design:" << std::endl;
     const std::string final_directory = out.file("final_analysis");
@@ -235,6 +234,7 @@ namespace softopt
                                          targets,
                                          final_directory,
                                          pcout);
+    check_castability(settings, problem.design_configuration(), out, pcout);
     bool verified = true;
     if (!settings.verification.mesh_sizes.empty())
       {

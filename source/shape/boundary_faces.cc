@@ -5,21 +5,35 @@
 namespace softopt
 {
   std::vector<BoundaryFace>
-  locally_owned_boundary_faces(const DesignConfiguration &design)
+  locally_owned_boundary_faces(const DesignConfiguration &design,
+                               const Deformation         *deformation)
   {
     const auto &X = design.positions();
-    // The node whose DoFs are @p dof(c) for the components c.
-    const auto position = [&](const auto &dof) {
-      return Point<3>(X(dof(0)), X(dof(1)), X(dof(2)));
-    };
     std::vector<BoundaryFace> faces;
-    for (const auto &cell : design.get_dof_handler().active_cell_iterators())
-      if (cell->is_locally_owned() && cell->at_boundary())
+    for (const auto &design_cell : design.get_dof_handler().active_cell_iterators())
+      if (design_cell->is_locally_owned() && design_cell->at_boundary())
         {
+          // The same cell on the displacement's DoFs: its nodes' DoFs for
+          // the components 0-2 are ordered as the design's.
+          const auto u_cell = deformation ?
+                                DoFHandler<3>::active_cell_iterator(&design_cell->get_triangulation(),
+                                                                    design_cell->level(),
+                                                                    design_cell->index(),
+                                                                    &deformation->dof_handler) :
+                                design_cell;
+          // The node whose DoFs are @p dof(cell, c) for the components c.
+          const auto position = [&](const auto &dof) {
+            Point<3> p(X(dof(design_cell, 0)), X(dof(design_cell, 1)), X(dof(design_cell, 2)));
+            if (deformation)
+              for (unsigned int c = 0; c < 3; ++c)
+                p[c] += deformation->u(dof(u_cell, c));
+            return p;
+          };
+          const auto &cell = design_cell;
           Point<3> cell_center;
           for (const unsigned int v : cell->vertex_indices())
-            cell_center += position([&](const unsigned int c) {
-                             return cell->vertex_dof_index(v, c);
+            cell_center += position([&](const auto &on, const unsigned int c) {
+                             return on->vertex_dof_index(v, c);
                            }) / 4.;
           for (const unsigned int f : cell->face_indices())
             if (cell->at_boundary(f))
@@ -28,8 +42,8 @@ namespace softopt
                 BoundaryFace result;
                 result.boundary_id = face->boundary_id();
                 for (unsigned int v = 0; v < 3; ++v)
-                  result.corner[v] = position([&](const unsigned int c) {
-                    return face->vertex_dof_index(v, c);
+                  result.corner[v] = position([&](const auto &on, const unsigned int c) {
+                    return on->face(f)->vertex_dof_index(v, c);
                   });
                 for (unsigned int l = 0; l < 3; ++l)
                   {
@@ -39,8 +53,10 @@ namespace softopt
                       if (face->vertex_index(v) != line->vertex_index(0) &&
                           face->vertex_index(v) != line->vertex_index(1))
                         opposite = v;
-                    result.midpoint[opposite] = position(
-                      [&](const unsigned int c) { return line->dof_index(c); });
+                    result.midpoint[opposite] =
+                      position([&](const auto &on, const unsigned int c) {
+                        return on->face(f)->line(l)->dof_index(c);
+                      });
                   }
                 // Outward: away from the cell's center.
                 const Tensor<1, 3> normal =
@@ -74,13 +90,14 @@ namespace softopt
 
 
   std::vector<double>
-  gathered_boundary_triangles(const DesignConfiguration &design,
-                              std::vector<types::boundary_id> *boundary_ids)
+  gathered_boundary_triangles(const DesignConfiguration       &design,
+                              std::vector<types::boundary_id> *boundary_ids,
+                              const Deformation               *deformation)
   {
     const auto          comm = design.get_dof_handler().get_communicator();
     std::vector<double> local;
     std::vector<types::boundary_id> local_ids;
-    for (const auto &face : locally_owned_boundary_faces(design))
+    for (const auto &face : locally_owned_boundary_faces(design, deformation))
       for (const auto &t : flat_triangles(face))
         {
           local_ids.push_back(face.boundary_id);

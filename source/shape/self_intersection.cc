@@ -68,10 +68,11 @@ namespace softopt
 
 
   SelfIntersection
-  design_self_intersections(const DesignConfiguration &design)
+  design_self_intersections(const DesignConfiguration &design, const Deformation *deformation)
   {
-    const auto comm    = design.get_dof_handler().get_communicator();
-    const auto corners = gathered_boundary_triangles(design); // design.stl's
+    const auto comm = design.get_dof_handler().get_communicator();
+    const auto corners =
+      gathered_boundary_triangles(design, nullptr, deformation); // design.stl's
     SelfIntersection result;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       result = intersections(corners);

@@ -21,13 +21,24 @@ namespace softopt
     types::boundary_id      boundary_id;
   };
 
+  /** A displacement u on the design's mesh (a state of the physics: its
+   * components 0-2 on @p dof_handler, a DoFHandler of the same
+   * triangulation with P2 nodes, ghosted). */
+  struct Deformation
+  {
+    const DoFHandler<3>                &dof_handler;
+    const PETScWrappers::MPI::Vector &u;
+  };
+
   /**
-   * The boundary faces of this rank's cells, with their nodes at X. Faces
+   * The boundary faces of this rank's cells, with their nodes at X (at
+   * X + u with @p deformation: the deformed configuration). Faces
    * of neighbouring cells read shared nodes from the same degrees of
    * freedom, so the whole boundary is watertight to the last bit.
    */
   std::vector<BoundaryFace>
-  locally_owned_boundary_faces(const DesignConfiguration &design);
+  locally_owned_boundary_faces(const DesignConfiguration &design,
+                               const Deformation         *deformation = nullptr);
 
   /** The four flat triangles of @p face, split at its midside nodes, with
    * its orientation (design.stl's triangles). */
@@ -39,7 +50,8 @@ namespace softopt
    * others), and with @p boundary_ids the boundary id of each. Collective. */
   std::vector<double>
   gathered_boundary_triangles(const DesignConfiguration       &design,
-                              std::vector<types::boundary_id> *boundary_ids = nullptr);
+                              std::vector<types::boundary_id> *boundary_ids = nullptr,
+                              const Deformation               *deformation  = nullptr);
 } // namespace softopt
 
 #endif

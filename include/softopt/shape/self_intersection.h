@@ -3,6 +3,7 @@
 
 #include <deal.II/base/point.h>
 
+#include <softopt/shape/boundary_faces.h>
 #include <softopt/shape/design_configuration.h>
 
 namespace softopt
@@ -20,13 +21,16 @@ namespace softopt
 
   /**
    * Self-intersections of the boundary of the design configuration X =
-   * X_o + psi (CGAL's Polygon_mesh_processing on the surface gathered on
-   * rank 0, with exact predicates). A design that passes through itself
-   * cannot be cast, and the model, which has no contact, would go on
-   * computing it. Collective; every rank gets the result.
+   * X_o + psi, or with @p deformation of the deformed one X + u (CGAL's
+   * Polygon_mesh_processing on the surface gathered on rank 0, with exact
+   * predicates). A design that passes through itself cannot be cast, and
+   * the model, which has no contact, would go on computing it; a deformed
+   * surface that passes through itself has walls in contact. Collective;
+   * every rank gets the result.
    */
   SelfIntersection
-  design_self_intersections(const DesignConfiguration &design);
+  design_self_intersections(const DesignConfiguration &design,
+                            const Deformation         *deformation = nullptr);
 } // namespace softopt
 
 #endif
