@@ -17,40 +17,11 @@ source=$2
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || exit 1
+source "$source/tests/sphere_case.sh"
 case_file() { # OUTPUT_DIRECTORY ITERATIONS SCHEDULE [MESH_SIZE]
-  cat <<PRM
-set Output directory = $1
-set Print timings = false
-subsection Output
-  set VTU output = none
-end
-subsection Geometry
-  set Mesh file = $source/meshes/sphere_octant.geo
-  set Mesh size = ${4:-0.5}
-  set Dirichlet boundaries = 1: x; 2: y; 3: z
-  set Pressure boundary ids = 4
-  set Design boundary ids = 5
-end
-subsection Material
-  set Young's modulus = 3
-  set Poisson's ratio = 0.4999
-end
-subsection Loading
-  set Pressure = 302
-end
-subsection Optimization
-  set Maximum iterations = $2
-  set Mesh size schedule = $3
-  set Checkpoint interval = 2
-  set Final analysis steps = 1
-  set Design bound = 0.05
-end
-subsection Objective 1
-  set Direction field = constant
-  set Direction = 1, 0, 0
-  set Weight = 1
-end
-PRM
+  thick_sphere_case "$source" "$1" "$2" "${4:-0.5}" \
+    "  set Mesh size schedule = $3
+  set Checkpoint interval = 2"
 }
 failures=0
 fail() { echo "FAIL $*"; failures=$((failures + 1)); }
