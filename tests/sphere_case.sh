@@ -75,3 +75,20 @@ subsection Objective 1
 end
 PRM
 }
+
+# thick_sphere_case's objective from the incompressible closed form, in mm:
+# lambda_a from p / mu = f(lambda_b) - f(lambda_a), f(s) = 2/s + 1/(2 s^4),
+# lambda_b^3 = 1 + (lambda_a^3 - 1) (A/B)^3, and g_1 = (lambda_b - 1) B / 2.
+thick_sphere_exact() {
+  /usr/bin/python3 - <<'PY'
+E, nu, p, A, B = 3.0, 0.4999, 0.302, 1.0, 2.0
+mu = E / (2 * (1 + nu))
+f = lambda s: 2 / s + 1 / (2 * s**4)
+lb = lambda la: (1 + (la**3 - 1) * (A / B)**3) ** (1 / 3)
+lo, hi = 1.0, 1.5
+for _ in range(200):  # bisection: f(lb) - f(la) ascends in la
+    m = (lo + hi) / 2
+    lo, hi = (m, hi) if f(lb(m)) - f(m) < p / mu else (lo, m)
+print("%.12g" % ((lb(lo) - 1) * B / 2))
+PY
+}
