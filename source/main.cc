@@ -33,6 +33,8 @@ namespace
     "  softopt check-design CASE.prm     castability checks (wall thickness,\n"
     "                                    self-intersection) of a run's final\n"
     "                                    design, or of the case's mesh\n"
+    "  softopt mold CASE.prm             printable mold parts (two halves, cores)\n"
+    "                                    of the same design, into mold/\n"
     "  softopt check-gradients CASE.prm  adjoint gradients against finite differences\n"
     "  softopt CASE.prm                  run the prm file's \"Command\"\n"
     "  softopt print-parameters          every entry, with its default and "
@@ -96,7 +98,7 @@ main(int argc, char **argv)
           file    = args[1];
         }
       else if (args[0] == "analyze" || args[0] == "check-gradients" || args[0] == "verify" ||
-               args[0] == "check-design")
+               args[0] == "check-design" || args[0] == "mold")
         {
           AssertThrow(args.size() == 2,
                       dealii::ExcMessage(std::string("\"softopt ") + args[0] +
@@ -131,6 +133,8 @@ main(int argc, char **argv)
         return softopt::run_verification(settings, MPI_COMM_WORLD);
       if (command == "check-design")
         return softopt::run_check_design(settings, MPI_COMM_WORLD);
+      if (command == "mold")
+        return softopt::run_mold(settings, MPI_COMM_WORLD);
       if (command == "optimize")
         return softopt::run_optimization(settings,
                                          restart    ? softopt::Start::restart :

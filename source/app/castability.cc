@@ -156,17 +156,27 @@ namespace softopt
 
 
 
-  int
-  run_check_design(const Settings &settings, const MPI_Comm comm)
+  std::string
+  final_design_mesh(const Settings &settings, const MPI_Comm comm)
   {
-    ConditionalOStream pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0);
-    const std::string  design_mesh = settings.output_directory + "/design.msh";
-    const bool         finished    = Utilities::MPI::broadcast( // the same mesh on every rank
+    const std::string design_mesh = settings.output_directory + "/design.msh";
+    const bool        finished    = Utilities::MPI::broadcast( // the same mesh on every rank
       comm,
       Utilities::MPI::this_mpi_process(comm) == 0 && std::filesystem::exists(design_mesh),
       0);
+    return finished ? design_mesh : "";
+  }
+
+
+
+  int
+  run_check_design(const Settings &settings, const MPI_Comm comm)
+  {
+    ConditionalOStream    pcout(std::cout, Utilities::MPI::this_mpi_process(comm) == 0);
+    const std::string     design_mesh = final_design_mesh(settings, comm);
+    const bool            finished    = !design_mesh.empty();
     const OutputDirectory out(settings.output_directory, comm);
-    const AnalysisBody    body(settings, comm, finished ? design_mesh : "");
+    const AnalysisBody    body(settings, comm, design_mesh);
     pcout << (finished ? "The final design of <" + settings.output_directory + "> (design.msh, " :
                          "The mesh of " + settings.input->path() + " (")
           << body.triangulation->n_global_active_cells() << " tetrahedra)" << std::endl;

@@ -17,7 +17,7 @@ namespace softopt
                       "checked.");
     prm.declare_entry("Command",
                       "analyze",
-                      Patterns::Selection("analyze|optimize|verify|check-design|check-gradients"),
+                      Patterns::Selection("analyze|optimize|verify|check-design|mold|check-gradients"),
                       "What \"softopt CASE.prm\" does when no command is "
                       "given on the command line.");
     OutputParameters::declare_parameters(prm);
@@ -30,6 +30,7 @@ namespace softopt
     DirectSolver::declare_parameters(prm);
     VerificationParameters::declare_parameters(prm);
     CastabilityParameters::declare_parameters(prm);
+    MoldParameters::declare_parameters(prm);
     Functionals::declare_parameters(prm, input);
   }
 
@@ -65,6 +66,7 @@ namespace softopt
     linear_solver = DirectSolver::parse_parameters(prm);
     verification.parse_parameters(prm, *input);
     castability.parse_parameters(prm, *input);
+    mold.parse_parameters(prm, *input);
     for (auto &f : Functionals::create(prm, *input))
       functionals.push_back(std::move(f));
   }

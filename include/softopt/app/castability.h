@@ -41,6 +41,11 @@ namespace softopt
                     const OutputDirectory     &out,
                     ConditionalOStream        &pcout);
 
+  /** The final design of the case's output directory (its design.msh) if
+   * there is one, else "" (the case's own mesh). Collective. */
+  std::string
+  final_design_mesh(const Settings &settings, const MPI_Comm comm);
+
   /**
    * "softopt check-design CASE.prm": the castability checks of the final
    * design of the case's output directory (its design.msh) if there is

@@ -4,6 +4,7 @@
 #include <deal.II/base/parameter_handler.h>
 
 #include <softopt/app/castability.h>
+#include <softopt/app/mold.h>
 #include <softopt/app/verification_parameters.h>
 #include <softopt/base/input.h>
 #include <softopt/io/output_parameters.h>
@@ -46,6 +47,9 @@ namespace softopt
 
     /** subsection Castability */
     CastabilityParameters castability;
+
+    /** subsection Mold */
+    MoldParameters mold;
   };
 } // namespace softopt
 

@@ -4,6 +4,7 @@
 #include <softopt/shape/design_configuration.h>
 
 #include <string>
+#include <vector>
 
 namespace softopt
 {
@@ -20,6 +21,12 @@ namespace softopt
    */
   unsigned int
   write_design_stl(const DesignConfiguration &design, const std::string &file);
+
+  /** Writes the triangles @p corners (9 numbers each, outward) as a binary
+   * STL in mm with the 80-character header @p title, through a temporary
+   * file. Call on one rank. */
+  void
+  write_stl(const std::vector<double> &corners, const std::string &file, const std::string &title);
 } // namespace softopt
 
 #endif
