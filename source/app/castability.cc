@@ -1,6 +1,7 @@
 #include <softopt/app/analysis.h>
 #include <softopt/app/castability.h>
 #include <softopt/app/settings.h>
+#include <softopt/base/on_rank_zero.h>
 #include <softopt/io/csv_writer.h>
 #include <softopt/shape/self_intersection.h>
 #include <softopt/shape/wall_thickness.h>
@@ -92,18 +93,7 @@ namespace softopt
       if (settings.geometry.is_symmetry_plane(id))
         mirrors.insert(id);
     const auto wall = wall_thickness(design, mirrors);
-    std::string error;
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      try
-        {
-          write_wall_thickness_vtu(wall, out.file("wall_thickness.vtu"));
-        }
-      catch (const std::exception &e)
-        {
-          error = e.what();
-        }
-    error = Utilities::MPI::broadcast(comm, error, 0); // thrown on every rank
-    AssertThrow(error.empty(), ExcMessage(error));
+    on_rank_zero(comm, [&]() { write_wall_thickness_vtu(wall, out.file("wall_thickness.vtu")); });
     const double minimum = settings.castability.minimum_wall_thickness;
     // A ray without an opposite wall: the surface is not closed there.
     const bool thin = wall.minimum < minimum || wall.n_without_opposite > 0;

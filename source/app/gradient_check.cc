@@ -1,5 +1,6 @@
 #include <deal.II/base/conditional_ostream.h>
 
+#include <softopt/base/on_rank_zero.h>
 #include <softopt/app/gradient_check.h>
 #include <softopt/base/seeded_random.h>
 #include <softopt/io/output_directory.h>
@@ -32,10 +33,8 @@ namespace softopt
         }
       catch (const ExceptionBase &e)
         {
-          std::ostringstream message;
-          e.print_info(message);
-          pcout << "  the design at step " << step << " mm was refused: "
-                << Utilities::trim(message.str()) << std::endl;
+          pcout << "  the design at step " << step << " mm was refused: " << user_message(e)
+                << std::endl;
           return std::vector<double>(problem.functionals().size(), std::nan(""));
         }
     }

@@ -4,6 +4,7 @@
 #include <softopt/app/castability.h>
 #include <softopt/app/mold.h>
 #include <softopt/app/settings.h>
+#include <softopt/base/on_rank_zero.h>
 #include <softopt/io/csv_writer.h>
 #include <softopt/io/output_directory.h>
 #include <softopt/io/stl_writer.h>
@@ -191,32 +192,17 @@ namespace softopt
 
     std::vector<types::boundary_id> ids;
     const auto corners = gathered_boundary_triangles(*body.design, &ids);
-    std::string error;
-    Mold        mold;
-    if (root)
-      try
-        {
-          mold = make_mold(corners, ids, clamped, cavity, settings.mold.dimensions);
-          // Aside, then renamed: an earlier mold stays whole until this one is.
-          const std::string folder = out.file("mold"), aside = out.file("mold.tmp");
-          std::filesystem::remove_all(aside);
-          std::filesystem::create_directory(aside);
-          write_mold(mold, aside);
-          std::filesystem::remove_all(folder);
-          std::filesystem::rename(aside, folder);
-        }
-      catch (const ExceptionBase &e)
-        {
-          std::ostringstream message;
-          e.print_info(message);
-          error = Utilities::trim(message.str());
-        }
-      catch (const std::exception &e)
-        {
-          error = e.what();
-        }
-    error = Utilities::MPI::broadcast(comm, error, 0);
-    AssertThrow(error.empty(), ExcMessage(error));
+    Mold       mold;
+    on_rank_zero(comm, [&]() {
+      mold = make_mold(corners, ids, clamped, cavity, settings.mold.dimensions);
+      // Aside, then renamed: an earlier mold stays whole until this one is.
+      const std::string folder = out.file("mold"), aside = out.file("mold.tmp");
+      std::filesystem::remove_all(aside);
+      std::filesystem::create_directory(aside);
+      write_mold(mold, aside);
+      std::filesystem::remove_all(folder);
+      std::filesystem::rename(aside, folder);
+    });
 
     if (root)
       {

@@ -7,6 +7,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/grid/tria_description.h>
 
+#include <softopt/base/on_rank_zero.h>
 #include <softopt/geometry/geometry.h>
 #include <softopt/geometry/gmsh_mesh.h>
 
@@ -244,15 +245,9 @@ namespace softopt
         std::ifstream in(linear_file);
         grid_in.read_msh(in);
       }
-    catch (const ExceptionBase &e)
-      {
-        std::ostringstream message;
-        e.print_info(message);
-        error = Utilities::trim(message.str());
-      }
     catch (const std::exception &e)
       {
-        error = e.what();
+        error = user_message(e);
       }
     std::filesystem::remove(linear_file);
     MPI_Barrier(comm);

@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 
+#include <softopt/base/on_rank_zero.h>
 #include <softopt/optimization/checkpoint.h>
 #include <softopt/optimization/shape_optimizer.h>
 
@@ -232,12 +233,7 @@ namespace softopt
         }
       catch (const std::exception &e)
         {
-          std::ostringstream message;
-          if (const auto *deal = dynamic_cast<const ExceptionBase *>(&e))
-            deal->print_info(message);
-          else
-            message << e.what();
-          const std::string reason = Utilities::trim(message.str());
+          const std::string reason = user_message(e);
           if (before_update)
             {
               x = *before_update; // the old mesh, its d and its MMA

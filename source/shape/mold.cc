@@ -151,10 +151,10 @@ namespace softopt
       for (unsigned int i = 0; i < n; ++i)
         {
           const std::size_t b0 = 2 + i, b1 = 2 + (i + 1) % n, t0 = b0 + n, t1 = b1 + n;
-          soup.triangles.push_back({0, b1, b0});
-          soup.triangles.push_back({1, t0, t1});
-          soup.triangles.push_back({b0, b1, t1});
-          soup.triangles.push_back({b0, t1, t0});
+          soup.triangles.push_back(Triangle{{0, b1, b0}});
+          soup.triangles.push_back(Triangle{{1, t0, t1}});
+          soup.triangles.push_back(Triangle{{b0, b1, t1}});
+          soup.triangles.push_back(Triangle{{b0, t1, t0}});
         }
       return solid(soup);
     }
@@ -185,12 +185,12 @@ namespace softopt
       };
       for (unsigned int i = 0; i < n_around; ++i)
         {
-          soup.triangles.push_back({0, ring(1, i + 1), ring(1, i)});
-          soup.triangles.push_back({1, ring(n_rings, i), ring(n_rings, i + 1)});
+          soup.triangles.push_back(Triangle{{0, ring(1, i + 1), ring(1, i)}});
+          soup.triangles.push_back(Triangle{{1, ring(n_rings, i), ring(n_rings, i + 1)}});
           for (unsigned int j = 1; j < n_rings; ++j)
             {
-              soup.triangles.push_back({ring(j, i), ring(j, i + 1), ring(j + 1, i + 1)});
-              soup.triangles.push_back({ring(j, i), ring(j + 1, i + 1), ring(j + 1, i)});
+              soup.triangles.push_back(Triangle{{ring(j, i), ring(j, i + 1), ring(j + 1, i + 1)}});
+              soup.triangles.push_back(Triangle{{ring(j, i), ring(j + 1, i + 1), ring(j + 1, i)}});
             }
         }
       return solid(soup);
@@ -211,11 +211,11 @@ namespace softopt
                               u[(k >> 2) & 1] * frame[2]);
       // Two triangles per face of the cube with corners numbered by bits.
       const std::array<std::array<std::size_t, 4>, 6> faces{
-        {{0, 1, 3, 2}, {4, 6, 7, 5}, {0, 4, 5, 1}, {2, 3, 7, 6}, {0, 2, 6, 4}, {1, 5, 7, 3}}};
+        {{{0, 1, 3, 2}}, {{4, 6, 7, 5}}, {{0, 4, 5, 1}}, {{2, 3, 7, 6}}, {{0, 2, 6, 4}}, {{1, 5, 7, 3}}}};
       for (const auto &f : faces)
         {
-          soup.triangles.push_back({f[0], f[1], f[2]});
-          soup.triangles.push_back({f[0], f[2], f[3]});
+          soup.triangles.push_back(Triangle{{f[0], f[1], f[2]}});
+          soup.triangles.push_back(Triangle{{f[0], f[2], f[3]}});
         }
       return solid(soup);
     }
@@ -226,8 +226,10 @@ namespace softopt
       return CGAL::to_double(PMP::volume(mesh));
     }
 
+    /** The part @p mesh; its volume inside @p box if given (a core's stem
+     * reaches beyond the mold), else all of it. */
     MoldPart
-    part(const std::string &name, const Solid &mesh, const double volume_in_box)
+    part(const std::string &name, const Solid &mesh, const Solid *box = nullptr)
     {
       MoldPart result;
       result.name = name;
@@ -242,7 +244,8 @@ namespace softopt
       PMP::non_manifold_vertices(mesh, std::back_inserter(pinched));
       result.manifold      = result.closed && pinched.empty() && CGAL::is_valid_polygon_mesh(mesh);
       result.volume        = volume(mesh);
-      result.volume_in_box = volume_in_box;
+      result.volume_in_box =
+        box ? volume(boolean(mesh, *box, Operation::intersect, name)) : result.volume;
       return result;
     }
 
@@ -327,12 +330,13 @@ namespace softopt
       return Point<3>(moment / v);
     }
 
+    /** "(x, y, z) mm". */
     std::string
-    str(const Point<3> &p)
+    str(const Point<3> &p, const std::string &unit = " mm")
     {
       std::ostringstream s;
       s.precision(4);
-      s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ") mm";
+      s << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")" << unit;
       return s.str();
     }
 
@@ -421,7 +425,7 @@ namespace softopt
     AssertThrow(std::abs(normal * axis) < 1e-3,
                 ExcMessage("Mold / Split plane normal is not perpendicular to the actuator's "
                            "axis (the clamped base's normal, " +
-                           str(Point<3>(axis)).substr(0, str(Point<3>(axis)).size() - 3) +
+                           str(Point<3>(axis), "") +
                            "): the plane that splits the outer mold must contain the axis."));
     normal -= (normal * axis) * axis;
     normal /= normal.norm();
@@ -491,13 +495,13 @@ namespace softopt
 
     // Pour opening and vent, on the split plane, through the base between
     // the stems and the rim, from 0.2 mm inside the base to beyond the box.
-    const double rim = std::min(-extent[1][0], extent[1][1]);
+    const double       rim = std::min(-extent[1][0], extent[1][1]);
+    const double       s   = (rim + stems_reach) / 2; // their distance from the axis
     std::vector<Solid> channels;
     for (const auto &[diameter, sign, entry] :
          {std::tuple<double, double, std::string>{dims.pour_diameter, 1, "Pour opening diameter"},
           {dims.vent_diameter, -1, "Vent diameter"}})
       {
-        const double s = (rim + stems_reach) / 2;
         AssertThrow(s - diameter / 2 > stems_reach && s + diameter / 2 < rim,
                     ExcMessage("Mold / " + entry + " = " + std::to_string(diameter) +
                                " mm does not fit on the base between the core stems (out to " +
@@ -537,14 +541,11 @@ namespace softopt
     Solid cast = sprues_and_body;
     for (const auto &core : cores)
       cast = boolean(cast, core, Operation::subtract, "the cast part");
-    mold.parts.push_back(part("cast", cast, volume(cast)));
+    mold.parts.push_back(part("cast", cast));
     mold.sprue_volume = volume(sprues_and_body) - volume(outer);
 
     for (std::size_t k = 0; k < cores.size(); ++k)
-      mold.parts.push_back(
-        part("core_" + std::to_string(k + 1),
-             cores[k],
-             volume(boolean(cores[k], mold_box, Operation::intersect, "a core"))));
+      mold.parts.push_back(part("core_" + std::to_string(k + 1), cores[k], &mold_box));
 
     // The halves: half_a on the -normal side with the keys, half_b with
     // their seats.
@@ -559,8 +560,8 @@ namespace softopt
       }
     half_a = boolean(half_a, filled, Operation::subtract, "half_a");
     half_b = boolean(half_b, filled, Operation::subtract, "half_b");
-    mold.parts.push_back(part("half_a", half_a, volume(half_a)));
-    mold.parts.push_back(part("half_b", half_b, volume(half_b)));
+    mold.parts.push_back(part("half_a", half_a));
+    mold.parts.push_back(part("half_b", half_b));
 
     const Surface filled_copy = approximate(filled);
     Tree          tree(faces(filled_copy).first, faces(filled_copy).second, filled_copy);
