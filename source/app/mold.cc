@@ -99,7 +99,7 @@ namespace softopt
       AssertThrow(value > 0, ExcMessage(input.where("Mold", entry) + " must be positive."));
     AssertThrow(d.key_radius < d.wall / 2,
                 ExcMessage(input.where("Mold", "Key radius") + " = " +
-                           prm.get("Mold.Key radius") +
+                           CsvWriter::format(d.key_radius) +
                            " mm must be less than half the Wall thickness, so that the keys "
                            "stay inside the mold's side walls."));
   }
@@ -185,10 +185,10 @@ namespace softopt
     const double minimum = settings.castability.minimum_wall_thickness;
     AssertThrow(wall.minimum >= minimum,
                 ExcMessage("No mold for " + which + ": its wall is " +
-                           std::to_string(wall.minimum) + " mm thin at " + place(wall.where) +
+                           CsvWriter::format(wall.minimum) + " mm thin at " + place(wall.where) +
                            ", less than Castability / Minimum wall thickness = " +
-                           std::to_string(minimum) + " mm (wall_thickness.vtu of check-design "
-                           "shows where)."));
+                           CsvWriter::format(minimum) + " mm (wall_thickness.vtu of "
+                           "check-design shows where)."));
 
     std::vector<types::boundary_id> ids;
     const auto corners = gathered_boundary_triangles(*body.design, &ids);
