@@ -47,13 +47,25 @@ namespace softopt
       std::vector<Triangle> triangles;
     };
 
-    /** A closed solid from @p soup, oriented to bound its volume. */
+    /** @p x on a grid of 2^-17 mm (7.6e-6 mm). Points that round-off puts
+     * a hair apart (a box corner 1e-16 mm off the split plane, mesh nodes
+     * 4e-14 mm off it) coincide, instead of leaving slivers that the STL's
+     * floats cannot hold; and every input coordinate below 128 mm is a
+     * float, as the STL stores it. */
+    double
+    snapped(const double x)
+    {
+      return std::ldexp(std::round(std::ldexp(x, 17)), -17);
+    }
+
+    /** A closed solid from @p soup (its points snapped), oriented to bound
+     * its volume. */
     Solid
     solid(const Soup &soup)
     {
       std::vector<Epeck::Point_3> points;
       for (const auto &p : soup.points)
-        points.emplace_back(p[0], p[1], p[2]);
+        points.emplace_back(snapped(p[0]), snapped(p[1]), snapped(p[2]));
       std::vector<std::vector<std::size_t>> polygons;
       for (const auto &t : soup.triangles)
         polygons.push_back({t[0], t[1], t[2]});
@@ -226,6 +238,44 @@ namespace softopt
       return CGAL::to_double(PMP::volume(mesh));
     }
 
+    /** Whether the triangles @p corners, rounded to floats as an STL
+     * stores them, are closed (every edge has a face on its other side) and
+     * manifold (every directed edge once, no triangle with two equal
+     * corners): exact points a hair apart can round to one. */
+    struct Written
+    {
+      bool closed, manifold;
+    };
+    Written
+    edges_as_written(const std::vector<double> &corners)
+    {
+      std::map<std::array<float, 3>, std::size_t>         index;
+      std::map<std::pair<std::size_t, std::size_t>, unsigned int> edges;
+      bool                                                 degenerate = false;
+      for (std::size_t t = 0; t < corners.size() / 9; ++t)
+        {
+          std::array<std::size_t, 3> id;
+          for (unsigned int v = 0; v < 3; ++v)
+            {
+              const std::array<float, 3> p{{float(corners[9 * t + 3 * v]),
+                                            float(corners[9 * t + 3 * v + 1]),
+                                            float(corners[9 * t + 3 * v + 2])}};
+              id[v] = index.emplace(p, index.size()).first->second;
+            }
+          degenerate |= id[0] == id[1] || id[1] == id[2] || id[2] == id[0];
+          for (unsigned int v = 0; v < 3; ++v)
+            ++edges[{id[v], id[(v + 1) % 3]}];
+        }
+      Written result{true, !degenerate};
+      for (const auto &[edge, count] : edges)
+        {
+          const auto reverse = edges.find({edge.second, edge.first});
+          result.closed &= reverse != edges.end();
+          result.manifold &= count == 1 && reverse != edges.end() && reverse->second == 1;
+        }
+      return result;
+    }
+
     /** The part @p mesh; its volume inside @p box if given (a core's stem
      * reaches beyond the mold), else all of it. */
     MoldPart
@@ -239,10 +289,12 @@ namespace softopt
             const auto p = point(mesh.point(v));
             result.corners.insert(result.corners.end(), {p[0], p[1], p[2]});
           }
-      result.closed = CGAL::is_closed(mesh);
       std::vector<Solid::Halfedge_index> pinched;
       PMP::non_manifold_vertices(mesh, std::back_inserter(pinched));
-      result.manifold      = result.closed && pinched.empty() && CGAL::is_valid_polygon_mesh(mesh);
+      const auto written = edges_as_written(result.corners);
+      result.closed      = CGAL::is_closed(mesh) && written.closed;
+      result.manifold    = result.closed && pinched.empty() && CGAL::is_valid_polygon_mesh(mesh) &&
+                        written.manifold;
       result.volume        = volume(mesh);
       result.volume_in_box =
         box ? volume(boolean(mesh, *box, Operation::intersect, name)) : result.volume;
