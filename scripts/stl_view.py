@@ -8,21 +8,21 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 BLUE = (0.55, 0.72, 0.9)
 
 
-def read_stl(path):
-    """The triangles of a binary STL, shape (n, 3, 3), in plot coordinates
-    (y, z, x): the actuator axis x points up."""
+def read_triangles(path):
+    """The triangles of a binary STL, shape (n, 3, 3), as stored (mm)."""
     with open(path, "rb") as f:
         f.seek(80)
         n = int(np.frombuffer(f.read(4), dtype="<u4")[0])
         record = np.dtype([("normal", "<f4", 3), ("v", "<f4", (3, 3)),
                            ("attr", "<u2")])
         data = np.frombuffer(f.read(n * record.itemsize), dtype=record)
-    return data["v"][:, :, [1, 2, 0]].astype(float)
+    return data["v"].astype(float)
 
 
-def plot_coordinates(vector):
-    """A vector of the body's frame (x, y, z) in plot coordinates."""
-    return np.asarray(vector, dtype=float)[[1, 2, 0]]
+def read_stl(path):
+    """The triangles in plot coordinates (y, z, x): the actuator axis x
+    points up."""
+    return read_triangles(path)[:, :, [1, 2, 0]]
 
 
 def draw(ax, parts, elevation, azimuth):

@@ -147,6 +147,15 @@ namespace softopt
           rows << (u.area > 0 ? "warning" : "ok") << "\n";
         }
       write_whole_file(folder + "/undercuts.csv", rows.str());
+
+      // The frame, for renders and for whoever places the parts.
+      std::ostringstream frame;
+      frame << "direction,x,y,z\n";
+      for (const auto &[name, v] : {std::pair<std::string, Tensor<1, 3>>{"axis", mold.axis},
+                                    {"split_normal", mold.split_normal}})
+        frame << name << "," << CsvWriter::format(v[0] + 0.0) << ","
+              << CsvWriter::format(v[1] + 0.0) << "," << CsvWriter::format(v[2] + 0.0) << "\n";
+      write_whole_file(folder + "/frame.csv", frame.str());
     }
   } // namespace
 
@@ -195,6 +204,12 @@ namespace softopt
     Mold       mold;
     on_rank_zero(comm, [&]() {
       mold = make_mold(corners, ids, clamped, cavity, settings.mold.dimensions);
+      for (const auto &part : mold.parts)
+        AssertThrow(part.manifold,
+                    ExcMessage("No mold for " + which + ": its part " + part.name +
+                               " is not a closed manifold as an STL file stores it (vertices "
+                               "closer than a float resolves, or a pinched vertex). Another "
+                               "Mold / Wall thickness or Split plane normal may avoid it."));
       // Aside, then renamed: an earlier mold stays whole until this one is.
       const std::string folder = out.file("mold"), aside = out.file("mold.tmp");
       std::filesystem::remove_all(aside);
@@ -206,14 +221,15 @@ namespace softopt
 
     if (root)
       {
-        pcout << "Wrote " << out.file("mold") << "/ (parts.csv, undercuts.csv):" << std::endl;
+        pcout << "Wrote " << out.file("mold") << "/ (parts.csv, undercuts.csv, frame.csv):"
+              << std::endl;
         double sum = 0;
         for (const auto &part : mold.parts)
           {
             pcout << "  " << std::setw(7) << std::left << part.name << std::right
                   << " volume " << std::setprecision(6) << part.volume_in_box
                   << " mm^3 in the box, " << part.corners.size() / 9 << " triangles, "
-                  << (part.manifold ? "closed manifold" : "NOT a closed manifold") << std::endl;
+                  << "closed manifold" << std::endl;
             sum += part.volume_in_box;
           }
         pcout << "  the parts fill the box: " << sum << " of " << mold.box_volume

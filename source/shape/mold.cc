@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <set>
 #include <numeric>
 #include <sstream>
 
@@ -47,15 +48,16 @@ namespace softopt
       std::vector<Triangle> triangles;
     };
 
-    /** @p x on a grid of 2^-17 mm (7.6e-6 mm). Points that round-off puts
-     * a hair apart (a box corner 1e-16 mm off the split plane, mesh nodes
-     * 4e-14 mm off it) coincide, instead of leaving slivers that the STL's
-     * floats cannot hold; and every input coordinate below 128 mm is a
-     * float, as the STL stores it. */
+    /** @p x on a grid of 2^-14 mm (6.1e-5 mm, far below what a printer
+     * resolves). Points that round-off puts a hair apart (a box corner
+     * 1e-16 mm off the split plane, mesh nodes 4e-14 mm off it) coincide,
+     * instead of leaving slivers that the STL's floats cannot hold; and
+     * every input coordinate below 1024 mm is a float, as the STL stores
+     * it. */
     double
     snapped(const double x)
     {
-      return std::ldexp(std::round(std::ldexp(x, 17)), -17);
+      return std::ldexp(std::round(std::ldexp(x, 14)), -14);
     }
 
     /** A closed solid from @p soup (its points snapped), oriented to bound
@@ -76,10 +78,14 @@ namespace softopt
       return mesh;
     }
 
+    /** The double nearest to @p p's exact coordinates (a lazy number's
+     * double can change once its exact value is known), without -0. */
     Point<3>
     point(const Epeck::Point_3 &p)
     {
-      return Point<3>(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+      return Point<3>(CGAL::to_double(CGAL::exact(p.x())) + 0.0,
+                      CGAL::to_double(CGAL::exact(p.y())) + 0.0,
+                      CGAL::to_double(CGAL::exact(p.z())) + 0.0);
     }
 
     /** A double copy of @p mesh for queries. */
@@ -238,42 +244,20 @@ namespace softopt
       return CGAL::to_double(PMP::volume(mesh));
     }
 
-    /** Whether the triangles @p corners, rounded to floats as an STL
-     * stores them, are closed (every edge has a face on its other side) and
-     * manifold (every directed edge once, no triangle with two equal
-     * corners): exact points a hair apart can round to one. */
-    struct Written
+    /** Whether the corners of @p part stay apart as the floats of an STL
+     * file: two vertices that become one leave it open or pinched. */
+    bool
+    apart_as_floats(const MoldPart &part)
     {
-      bool closed, manifold;
-    };
-    Written
-    edges_as_written(const std::vector<double> &corners)
-    {
-      std::map<std::array<float, 3>, std::size_t>         index;
-      std::map<std::pair<std::size_t, std::size_t>, unsigned int> edges;
-      bool                                                 degenerate = false;
-      for (std::size_t t = 0; t < corners.size() / 9; ++t)
+      std::set<std::array<double, 3>> vertices;
+      std::set<std::array<float, 3>>  written;
+      for (std::size_t i = 0; i + 2 < part.corners.size(); i += 3)
         {
-          std::array<std::size_t, 3> id;
-          for (unsigned int v = 0; v < 3; ++v)
-            {
-              const std::array<float, 3> p{{float(corners[9 * t + 3 * v]),
-                                            float(corners[9 * t + 3 * v + 1]),
-                                            float(corners[9 * t + 3 * v + 2])}};
-              id[v] = index.emplace(p, index.size()).first->second;
-            }
-          degenerate |= id[0] == id[1] || id[1] == id[2] || id[2] == id[0];
-          for (unsigned int v = 0; v < 3; ++v)
-            ++edges[{id[v], id[(v + 1) % 3]}];
+          const double *p = &part.corners[i];
+          vertices.insert({{p[0], p[1], p[2]}});
+          written.insert({{float(p[0]), float(p[1]), float(p[2])}});
         }
-      Written result{true, !degenerate};
-      for (const auto &[edge, count] : edges)
-        {
-          const auto reverse = edges.find({edge.second, edge.first});
-          result.closed &= reverse != edges.end();
-          result.manifold &= count == 1 && reverse != edges.end() && reverse->second == 1;
-        }
-      return result;
+      return written.size() == vertices.size();
     }
 
     /** The part @p mesh; its volume inside @p box if given (a core's stem
@@ -283,18 +267,16 @@ namespace softopt
     {
       MoldPart result;
       result.name = name;
+      std::map<Solid::Vertex_index, Point<3>> at; // each vertex once
+      for (const auto v : mesh.vertices())
+        at[v] = point(mesh.point(v));
       for (const auto f : mesh.faces())
         for (const auto v : vertices_around_face(mesh.halfedge(f), mesh))
-          {
-            const auto p = point(mesh.point(v));
-            result.corners.insert(result.corners.end(), {p[0], p[1], p[2]});
-          }
+          result.corners.insert(result.corners.end(), {at[v][0], at[v][1], at[v][2]});
       std::vector<Solid::Halfedge_index> pinched;
       PMP::non_manifold_vertices(mesh, std::back_inserter(pinched));
-      const auto written = edges_as_written(result.corners);
-      result.closed      = CGAL::is_closed(mesh) && written.closed;
-      result.manifold    = result.closed && pinched.empty() && CGAL::is_valid_polygon_mesh(mesh) &&
-                        written.manifold;
+      result.closed   = CGAL::is_closed(mesh);
+      result.manifold = result.closed && pinched.empty() && CGAL::is_valid_polygon_mesh(mesh);
       result.volume        = volume(mesh);
       result.volume_in_box =
         box ? volume(boolean(mesh, *box, Operation::intersect, name)) : result.volume;
@@ -444,6 +426,167 @@ namespace softopt
 
 
 
+  namespace
+  {
+    /**
+     * The mold in the frame of the actuator: @p corners in coordinates
+     * along the axis (outward through the clamped base), the side and the
+     * split plane's normal, from the base's centroid. The box's faces and
+     * the split plane are coordinate planes there, so points snapped onto
+     * them stay on them, whatever the frame's directions in the design.
+     */
+    Mold
+    mold_in_frame(const std::vector<double>             &corners,
+                  const std::vector<types::boundary_id> &boundary_ids,
+                  const std::set<types::boundary_id>    &cavity_ids,
+                  const MoldDimensions                  &dims)
+    {
+      Mold                              mold;
+      const Point<3>                    base_center;
+      const Tensor<1, 3>                axis({1, 0, 0}), side({0, 1, 0}), normal({0, 0, 1});
+      const std::array<Tensor<1, 3>, 3> frame = {{axis, side, normal}};
+
+      // The outer surface (the body with its cavities filled) and the cavities.
+      const Soup outer_soup = select(corners, boundary_ids, cavity_ids, false);
+      const Solid outer     = solid(outer_soup);
+      AssertThrow(CGAL::is_closed(outer),
+                  ExcMessage("The design's outer surface is not closed: no mold can be made "
+                             "around it."));
+      std::array<std::array<double, 2>, 3> extent;
+      for (unsigned int d = 0; d < 3; ++d)
+        extent[d] = {{std::numeric_limits<double>::max(), -std::numeric_limits<double>::max()}};
+      for (const auto &p : outer_soup.points)
+        for (unsigned int d = 0; d < 3; ++d)
+          {
+            const double s = (p - base_center) * frame[d];
+            extent[d]      = {{std::min(extent[d][0], s), std::max(extent[d][1], s)}};
+          }
+      const double size = extent[0][1] - extent[0][0];
+      AssertThrow(extent[0][1] < 1e-6 * size,
+                  ExcMessage("The clamped base is not the end of the design along its normal "
+                             "(the body reaches " +
+                             std::to_string(extent[0][1]) +
+                             " mm beyond it): the core stems and the pour opening go out "
+                             "through the base."));
+      const double w   = dims.wall;
+      const double top = w; // the box's face beyond the base, in axis units
+      const Solid  mold_box =
+        box(base_center, frame, {{extent[0][0] - w, top}}, {{extent[1][0] - w, extent[1][1] + w}},
+            {{extent[2][0] - w, extent[2][1] + w}});
+      mold.box_volume = volume(mold_box);
+
+      // Cores: each cavity with a stem along the axis, out through the base.
+      std::vector<Solid> cavities, cores;
+      const auto         cavity_pieces = pieces(select(corners, boundary_ids, cavity_ids, true));
+      double             stems_reach   = 0; // how far from the axis the stems reach
+      for (std::size_t k = 0; k < cavity_pieces.size(); ++k)
+        {
+          const std::string name = "core_" + std::to_string(k + 1);
+          cavities.push_back(solid(cavity_pieces[k]));
+          AssertThrow(CGAL::is_closed(cavities.back()),
+                      ExcMessage("Cavity " + std::to_string(k + 1) +
+                                 " of the design is not closed: no core can be made of it."));
+          Soup inward = cavity_pieces[k]; // its faces are outward from the body
+          for (auto &t : inward.triangles)
+            std::swap(t[1], t[2]);
+          const Point<3> c = centroid(inward);
+          {
+            const Surface                               copy = approximate(cavities.back());
+            const CGAL::Side_of_triangle_mesh<Surface, Epick> inside(copy);
+            AssertThrow(inside(Epick::Point_3(c[0], c[1], c[2])) == CGAL::ON_BOUNDED_SIDE,
+                        ExcMessage("The centroid " + str(c) + " of cavity " +
+                                   std::to_string(k + 1) +
+                                   " lies outside it: its core's stem cannot start there."));
+          }
+          const double   from_axis = (c - base_center - ((c - base_center) * axis) * axis).norm();
+          const Point<3> end       = c + (top + dims.stem_length - (c - base_center) * axis) * axis;
+          stems_reach = std::max(stems_reach, from_axis + dims.stem_diameter / 2);
+          cores.push_back(boolean(cavities.back(),
+                                  cylinder(c, end, dims.stem_diameter / 2, side),
+                                  Operation::unite,
+                                  name));
+        }
+
+      // Pour opening and vent, on the split plane, through the base between
+      // the stems and the rim, from 0.2 mm inside the base to beyond the box.
+      const double       rim = std::min(-extent[1][0], extent[1][1]);
+      const double       s   = (rim + stems_reach) / 2; // their distance from the axis
+      std::vector<Solid> channels;
+      for (const auto &[diameter, sign, entry] :
+           {std::tuple<double, double, std::string>{dims.pour_diameter, 1, "Pour opening diameter"},
+            {dims.vent_diameter, -1, "Vent diameter"}})
+        {
+          AssertThrow(s - diameter / 2 > stems_reach && s + diameter / 2 < rim,
+                      ExcMessage("Mold / " + entry + " = " + std::to_string(diameter) +
+                                 " mm does not fit on the base between the core stems (out to " +
+                                 std::to_string(stems_reach) + " mm from the axis) and the rim (" +
+                                 std::to_string(rim) + " mm)."));
+          const Point<3> at = base_center + sign * s * side;
+          channels.push_back(
+            cylinder(at - 0.2 * axis, at + (top + 1) * axis, diameter / 2, normal, 24));
+          for (const auto &cavity : cavities)
+            AssertThrow(!PMP::do_intersect(channels.back(), cavity),
+                        ExcMessage("Mold / " + entry +
+                                   ": the opening would reach a cavity (the base is thinner "
+                                   "than 0.2 mm at " +
+                                   str(at) + ")."));
+        }
+
+      // Keys: four spheres on the split plane in the side walls.
+      std::vector<Solid> keys;
+      for (const double s : {extent[0][0] + size / 4, extent[0][1] - size / 4})
+        for (const double t : {extent[1][0] - w / 2, extent[1][1] + w / 2})
+          keys.push_back(sphere(base_center + s * axis + t * side, dims.key_radius, normal));
+
+      // What the mold holds: the outer surface, the cores, the sprues.
+      Solid filled = outer;
+      for (const auto &core : cores)
+        filled = boolean(filled, core, Operation::unite, "the body with its cores");
+      Solid sprues_and_body = outer;
+      for (const auto &channel : channels)
+        {
+          filled = boolean(filled, channel, Operation::unite, "the body with its sprues");
+          sprues_and_body =
+            boolean(sprues_and_body,
+                    boolean(channel, mold_box, Operation::intersect, "a sprue"),
+                    Operation::unite,
+                    "the body with its sprues");
+        }
+      Solid cast = sprues_and_body;
+      for (const auto &core : cores)
+        cast = boolean(cast, core, Operation::subtract, "the cast part");
+      mold.parts.push_back(part("cast", cast));
+
+      for (std::size_t k = 0; k < cores.size(); ++k)
+        mold.parts.push_back(part("core_" + std::to_string(k + 1), cores[k], &mold_box));
+
+      // The halves: half_a on the -normal side with the keys, half_b with
+      // their seats.
+      Solid half_a = box(base_center, frame, {{extent[0][0] - w, top}},
+                         {{extent[1][0] - w, extent[1][1] + w}}, {{extent[2][0] - w, 0}});
+      Solid half_b = box(base_center, frame, {{extent[0][0] - w, top}},
+                         {{extent[1][0] - w, extent[1][1] + w}}, {{0, extent[2][1] + w}});
+      for (const auto &key : keys)
+        {
+          half_a = boolean(half_a, key, Operation::unite, "half_a with its keys");
+          half_b = boolean(half_b, key, Operation::subtract, "half_b with its key seats");
+        }
+      half_a = boolean(half_a, filled, Operation::subtract, "half_a");
+      half_b = boolean(half_b, filled, Operation::subtract, "half_b");
+      mold.parts.push_back(part("half_a", half_a));
+      mold.parts.push_back(part("half_b", half_b));
+
+      const Surface filled_copy = approximate(filled);
+      Tree          tree(faces(filled_copy).first, faces(filled_copy).second, filled_copy);
+      tree.accelerate_distance_queries();
+      mold.undercuts.push_back(undercut("half_a", half_a, -normal, tree, dims.undercut_tolerance));
+      mold.undercuts.push_back(undercut("half_b", half_b, normal, tree, dims.undercut_tolerance));
+      return mold;
+    }
+  } // namespace
+
+
+
   Mold
   make_mold(const std::vector<double>             &corners,
             const std::vector<types::boundary_id> &boundary_ids,
@@ -451,7 +594,6 @@ namespace softopt
             const std::set<types::boundary_id>    &cavity_ids,
             const MoldDimensions                  &dims)
   {
-    Mold mold;
     // The clamped base: its centroid and outward normal give the axis.
     const Soup base = select(corners, boundary_ids, clamped_ids, true);
     AssertThrow(!base.triangles.empty(),
@@ -471,7 +613,6 @@ namespace softopt
       }
     base_center /= base_area;
     axis /= axis.norm();
-    mold.axis = axis;
 
     Tensor<1, 3> normal = dims.split_normal / dims.split_normal.norm();
     AssertThrow(std::abs(normal * axis) < 1e-3,
@@ -481,145 +622,41 @@ namespace softopt
                            "): the plane that splits the outer mold must contain the axis."));
     normal -= (normal * axis) * axis;
     normal /= normal.norm();
-    const Tensor<1, 3>                side  = cross_product_3d(normal, axis);
-    const std::array<Tensor<1, 3>, 3> frame = {{axis, side, normal}};
+    const Tensor<1, 3> side = cross_product_3d(normal, axis); // (axis, side, normal) right-handed
 
-    // The outer surface (the body with its cavities filled) and the cavities.
-    const Soup outer_soup = select(corners, boundary_ids, cavity_ids, false);
-    const Solid outer     = solid(outer_soup);
-    AssertThrow(CGAL::is_closed(outer),
-                ExcMessage("The design's outer surface is not closed: no mold can be made "
-                           "around it."));
-    std::array<std::array<double, 2>, 3> extent;
-    for (unsigned int d = 0; d < 3; ++d)
-      extent[d] = {{std::numeric_limits<double>::max(), -std::numeric_limits<double>::max()}};
-    for (const auto &p : outer_soup.points)
-      for (unsigned int d = 0; d < 3; ++d)
-        {
-          const double s = (p - base_center) * frame[d];
-          extent[d]      = {{std::min(extent[d][0], s), std::max(extent[d][1], s)}};
-        }
-    const double size = extent[0][1] - extent[0][0];
-    AssertThrow(extent[0][1] < 1e-6 * size,
-                ExcMessage("The clamped base is not the end of the design along its normal "
-                           "(the body reaches " +
-                           std::to_string(extent[0][1]) +
-                           " mm beyond it): the core stems and the pour opening go out "
-                           "through the base."));
-    const double w   = dims.wall;
-    const double top = w; // the box's face beyond the base, in axis units
-    const Solid  mold_box =
-      box(base_center, frame, {{extent[0][0] - w, top}}, {{extent[1][0] - w, extent[1][1] + w}},
-          {{extent[2][0] - w, extent[2][1] + w}});
-    mold.box_volume = volume(mold_box);
-
-    // Cores: each cavity with a stem along the axis, out through the base.
-    std::vector<Solid> cavities, cores;
-    const auto         cavity_pieces = pieces(select(corners, boundary_ids, cavity_ids, true));
-    double             stems_reach   = 0; // how far from the axis the stems reach
-    for (std::size_t k = 0; k < cavity_pieces.size(); ++k)
+    // Into the frame, built there, and back.
+    const auto to_frame = [&](const Point<3> &p) {
+      const Tensor<1, 3> d = p - base_center;
+      return Point<3>(d * axis, d * side, d * normal);
+    };
+    const auto to_design = [&](const Point<3> &q) {
+      return base_center + q[0] * axis + q[1] * side + q[2] * normal;
+    };
+    std::vector<double> in_frame(corners.size());
+    for (std::size_t i = 0; i + 2 < corners.size(); i += 3)
       {
-        const std::string name = "core_" + std::to_string(k + 1);
-        cavities.push_back(solid(cavity_pieces[k]));
-        AssertThrow(CGAL::is_closed(cavities.back()),
-                    ExcMessage("Cavity " + std::to_string(k + 1) +
-                               " of the design is not closed: no core can be made of it."));
-        Soup inward = cavity_pieces[k]; // its faces are outward from the body
-        for (auto &t : inward.triangles)
-          std::swap(t[1], t[2]);
-        const Point<3> c = centroid(inward);
-        {
-          const Surface                               copy = approximate(cavities.back());
-          const CGAL::Side_of_triangle_mesh<Surface, Epick> inside(copy);
-          AssertThrow(inside(Epick::Point_3(c[0], c[1], c[2])) == CGAL::ON_BOUNDED_SIDE,
-                      ExcMessage("The centroid " + str(c) + " of cavity " +
-                                 std::to_string(k + 1) +
-                                 " lies outside it: its core's stem cannot start there."));
-        }
-        const double   from_axis = (c - base_center - ((c - base_center) * axis) * axis).norm();
-        const Point<3> end       = c + (top + dims.stem_length - (c - base_center) * axis) * axis;
-        stems_reach = std::max(stems_reach, from_axis + dims.stem_diameter / 2);
-        cores.push_back(boolean(cavities.back(),
-                                cylinder(c, end, dims.stem_diameter / 2, side),
-                                Operation::unite,
-                                name));
+        const Point<3> q = to_frame(Point<3>(corners[i], corners[i + 1], corners[i + 2]));
+        std::copy(&q[0], &q[0] + 3, in_frame.begin() + i);
       }
-
-    // Pour opening and vent, on the split plane, through the base between
-    // the stems and the rim, from 0.2 mm inside the base to beyond the box.
-    const double       rim = std::min(-extent[1][0], extent[1][1]);
-    const double       s   = (rim + stems_reach) / 2; // their distance from the axis
-    std::vector<Solid> channels;
-    for (const auto &[diameter, sign, entry] :
-         {std::tuple<double, double, std::string>{dims.pour_diameter, 1, "Pour opening diameter"},
-          {dims.vent_diameter, -1, "Vent diameter"}})
+    Mold mold = mold_in_frame(in_frame, boundary_ids, cavity_ids, dims);
+    for (auto &part : mold.parts)
       {
-        AssertThrow(s - diameter / 2 > stems_reach && s + diameter / 2 < rim,
-                    ExcMessage("Mold / " + entry + " = " + std::to_string(diameter) +
-                               " mm does not fit on the base between the core stems (out to " +
-                               std::to_string(stems_reach) + " mm from the axis) and the rim (" +
-                               std::to_string(rim) + " mm)."));
-        const Point<3> at = base_center + sign * s * side;
-        channels.push_back(
-          cylinder(at - 0.2 * axis, at + (top + 1) * axis, diameter / 2, normal, 24));
-        for (const auto &cavity : cavities)
-          AssertThrow(!PMP::do_intersect(channels.back(), cavity),
-                      ExcMessage("Mold / " + entry +
-                                 ": the opening would reach a cavity (the base is thinner "
-                                 "than 0.2 mm at " +
-                                 str(at) + ")."));
+        for (std::size_t i = 0; i + 2 < part.corners.size(); i += 3)
+          {
+            const Point<3> p =
+              to_design(Point<3>(part.corners[i], part.corners[i + 1], part.corners[i + 2]));
+            for (unsigned int d = 0; d < 3; ++d)
+              part.corners[i + d] = p[d] + 0.0; // no -0 in the STL
+          }
+        part.manifold = part.manifold && apart_as_floats(part);
       }
-
-    // Keys: four spheres on the split plane in the side walls.
-    std::vector<Solid> keys;
-    for (const double s : {extent[0][0] + size / 4, extent[0][1] - size / 4})
-      for (const double t : {extent[1][0] - w / 2, extent[1][1] + w / 2})
-        keys.push_back(sphere(base_center + s * axis + t * side, dims.key_radius, normal));
-
-    // What the mold holds: the outer surface, the cores, the sprues.
-    Solid filled = outer;
-    for (const auto &core : cores)
-      filled = boolean(filled, core, Operation::unite, "the body with its cores");
-    Solid sprues_and_body = outer;
-    for (const auto &channel : channels)
+    for (auto &u : mold.undercuts)
       {
-        filled = boolean(filled, channel, Operation::unite, "the body with its sprues");
-        sprues_and_body =
-          boolean(sprues_and_body,
-                  boolean(channel, mold_box, Operation::intersect, "a sprue"),
-                  Operation::unite,
-                  "the body with its sprues");
+        u.pull  = u.pull[0] * axis + u.pull[1] * side + u.pull[2] * normal;
+        u.where = to_design(u.where);
       }
-    Solid cast = sprues_and_body;
-    for (const auto &core : cores)
-      cast = boolean(cast, core, Operation::subtract, "the cast part");
-    mold.parts.push_back(part("cast", cast));
-    mold.sprue_volume = volume(sprues_and_body) - volume(outer);
-
-    for (std::size_t k = 0; k < cores.size(); ++k)
-      mold.parts.push_back(part("core_" + std::to_string(k + 1), cores[k], &mold_box));
-
-    // The halves: half_a on the -normal side with the keys, half_b with
-    // their seats.
-    Solid half_a = box(base_center, frame, {{extent[0][0] - w, top}},
-                       {{extent[1][0] - w, extent[1][1] + w}}, {{extent[2][0] - w, 0}});
-    Solid half_b = box(base_center, frame, {{extent[0][0] - w, top}},
-                       {{extent[1][0] - w, extent[1][1] + w}}, {{0, extent[2][1] + w}});
-    for (const auto &key : keys)
-      {
-        half_a = boolean(half_a, key, Operation::unite, "half_a with its keys");
-        half_b = boolean(half_b, key, Operation::subtract, "half_b with its key seats");
-      }
-    half_a = boolean(half_a, filled, Operation::subtract, "half_a");
-    half_b = boolean(half_b, filled, Operation::subtract, "half_b");
-    mold.parts.push_back(part("half_a", half_a));
-    mold.parts.push_back(part("half_b", half_b));
-
-    const Surface filled_copy = approximate(filled);
-    Tree          tree(faces(filled_copy).first, faces(filled_copy).second, filled_copy);
-    tree.accelerate_distance_queries();
-    mold.undercuts.push_back(undercut("half_a", half_a, -normal, tree, dims.undercut_tolerance));
-    mold.undercuts.push_back(undercut("half_b", half_b, normal, tree, dims.undercut_tolerance));
+    mold.axis         = axis;
+    mold.split_normal = normal;
     return mold;
   }
 } // namespace softopt

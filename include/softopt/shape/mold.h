@@ -44,7 +44,8 @@ namespace softopt
     double volume        = 0;
     double volume_in_box = 0;
     bool   closed        = false;
-    /** Every edge in two faces and every vertex in one fan of faces. */
+    /** Every edge in two faces and every vertex in one fan of faces, also
+     * once the corners are rounded to the floats of an STL file. */
     bool manifold = false;
   };
 
@@ -69,11 +70,12 @@ namespace softopt
     std::vector<MoldPart> parts;
     /** The box the two halves make together, its volume, mm^3. */
     double box_volume = 0;
-    /** The volume of the sprues (pour opening and vent inside the box). */
-    double sprue_volume = 0;
     /** The actuator's axis, outward through the clamped base, which is up
      * when casting (pour opening, vent and core stems are there). */
-    Tensor<1, 3>          axis;
+    Tensor<1, 3> axis;
+    /** The split plane's normal (unit, perpendicular to the axis): half_b
+     * is pulled off along it, half_a against it. */
+    Tensor<1, 3>          split_normal;
     std::vector<Undercut> undercuts;
   };
 
