@@ -214,19 +214,13 @@ namespace softopt
       return solid(soup);
     }
 
-    /** The box of points o + s a + t b + u c with s, t, u in the given
-     * intervals (a, b, c orthonormal). */
+    /** The box [x0, x1] x [y0, y1] x [z0, z1] (in the mold's frame). */
     Solid
-    box(const Point<3>                     &o,
-        const std::array<Tensor<1, 3>, 3> &frame,
-        const std::array<double, 2>        &s,
-        const std::array<double, 2>        &t,
-        const std::array<double, 2>        &u)
+    box(const std::array<double, 2> &x, const std::array<double, 2> &y, const std::array<double, 2> &z)
     {
       Soup soup;
       for (unsigned int k = 0; k < 8; ++k)
-        soup.points.push_back(o + s[k & 1] * frame[0] + t[(k >> 1) & 1] * frame[1] +
-                              u[(k >> 2) & 1] * frame[2]);
+        soup.points.emplace_back(x[k & 1], y[(k >> 1) & 1], z[(k >> 2) & 1]);
       // Two triangles per face of the cube with corners numbered by bits.
       const std::array<std::array<std::size_t, 4>, 6> faces{
         {{{0, 1, 3, 2}}, {{4, 6, 7, 5}}, {{0, 4, 5, 1}}, {{2, 3, 7, 6}}, {{0, 2, 6, 4}}, {{1, 5, 7, 3}}}};
@@ -441,10 +435,8 @@ namespace softopt
                   const std::set<types::boundary_id>    &cavity_ids,
                   const MoldDimensions                  &dims)
     {
-      Mold                              mold;
-      const Point<3>                    base_center;
-      const Tensor<1, 3>                axis({1, 0, 0}), side({0, 1, 0}), normal({0, 0, 1});
-      const std::array<Tensor<1, 3>, 3> frame = {{axis, side, normal}};
+      Mold               mold;
+      const Tensor<1, 3> axis({1, 0, 0}), side({0, 1, 0}), normal({0, 0, 1});
 
       // The outer surface (the body with its cavities filled) and the cavities.
       const Soup outer_soup = select(corners, boundary_ids, cavity_ids, false);
@@ -457,10 +449,7 @@ namespace softopt
         extent[d] = {{std::numeric_limits<double>::max(), -std::numeric_limits<double>::max()}};
       for (const auto &p : outer_soup.points)
         for (unsigned int d = 0; d < 3; ++d)
-          {
-            const double s = (p - base_center) * frame[d];
-            extent[d]      = {{std::min(extent[d][0], s), std::max(extent[d][1], s)}};
-          }
+          extent[d] = {{std::min(extent[d][0], p[d]), std::max(extent[d][1], p[d])}};
       const double size = extent[0][1] - extent[0][0];
       AssertThrow(extent[0][1] < 1e-6 * size,
                   ExcMessage("The clamped base is not the end of the design along its normal "
@@ -471,7 +460,7 @@ namespace softopt
       const double w   = dims.wall;
       const double top = w; // the box's face beyond the base, in axis units
       const Solid  mold_box =
-        box(base_center, frame, {{extent[0][0] - w, top}}, {{extent[1][0] - w, extent[1][1] + w}},
+        box({{extent[0][0] - w, top}}, {{extent[1][0] - w, extent[1][1] + w}},
             {{extent[2][0] - w, extent[2][1] + w}});
       mold.box_volume = volume(mold_box);
 
@@ -498,8 +487,8 @@ namespace softopt
                                    std::to_string(k + 1) +
                                    " lies outside it: its core's stem cannot start there."));
           }
-          const double   from_axis = (c - base_center - ((c - base_center) * axis) * axis).norm();
-          const Point<3> end       = c + (top + dims.stem_length - (c - base_center) * axis) * axis;
+          const double   from_axis = std::hypot(c[1], c[2]);
+          const Point<3> end       = c + (top + dims.stem_length - c[0]) * axis;
           stems_reach = std::max(stems_reach, from_axis + dims.stem_diameter / 2);
           cores.push_back(boolean(cavities.back(),
                                   cylinder(c, end, dims.stem_diameter / 2, side),
@@ -521,7 +510,7 @@ namespace softopt
                                  " mm does not fit on the base between the core stems (out to " +
                                  std::to_string(stems_reach) + " mm from the axis) and the rim (" +
                                  std::to_string(rim) + " mm)."));
-          const Point<3> at = base_center + sign * s * side;
+          const Point<3> at(0, sign * s, 0);
           channels.push_back(
             cylinder(at - 0.2 * axis, at + (top + 1) * axis, diameter / 2, normal, 24));
           for (const auto &cavity : cavities)
@@ -536,7 +525,7 @@ namespace softopt
       std::vector<Solid> keys;
       for (const double s : {extent[0][0] + size / 4, extent[0][1] - size / 4})
         for (const double t : {extent[1][0] - w / 2, extent[1][1] + w / 2})
-          keys.push_back(sphere(base_center + s * axis + t * side, dims.key_radius, normal));
+          keys.push_back(sphere(Point<3>(s, t, 0), dims.key_radius, normal));
 
       // What the mold holds: the outer surface, the cores, the sprues.
       Solid filled = outer;
@@ -562,9 +551,9 @@ namespace softopt
 
       // The halves: half_a on the -normal side with the keys, half_b with
       // their seats.
-      Solid half_a = box(base_center, frame, {{extent[0][0] - w, top}},
+      Solid half_a = box({{extent[0][0] - w, top}},
                          {{extent[1][0] - w, extent[1][1] + w}}, {{extent[2][0] - w, 0}});
-      Solid half_b = box(base_center, frame, {{extent[0][0] - w, top}},
+      Solid half_b = box({{extent[0][0] - w, top}},
                          {{extent[1][0] - w, extent[1][1] + w}}, {{0, extent[2][1] + w}});
       for (const auto &key : keys)
         {
