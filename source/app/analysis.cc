@@ -105,7 +105,9 @@ namespace softopt
           pcout << "  " << f.name() << " (" << kind << ", "
                 << (objective ? "lower" : "higher") << " is "
                 << (objective ? "better" : "worse") << "): ";
-          if (std::isnan(e.at_target))
+          if (f.load_factors().empty())
+            pcout << e.at_target << " (of the shape alone)";
+          else if (std::isnan(e.at_target))
             pcout << "target " << target_kPa << " kPa not on the path";
           else
             pcout << e.at_target << " at its target " << target_kPa << " kPa";
@@ -201,8 +203,9 @@ namespace softopt
           const double      value = f.evaluate_at(problem, design, state);
           row.push_back(CsvWriter::format(value));
           extrema[i].add(value, p_kPa);
-          if (point.at_target && f.load_factors().size() == 1 &&
-              f.load_factors()[0] == point.load_factor)
+          // (A functional of the shape alone holds at every target.)
+          if (point.at_target && (f.load_factors().empty() || (f.load_factors().size() == 1 &&
+                                                                f.load_factors()[0] == point.load_factor)))
             extrema[i].at_target = value;
         }
       row.push_back(std::to_string(point.newton_iterations));

@@ -88,11 +88,7 @@ namespace softopt
                   comm);
     pcout << "Castability (castability.csv):" << std::endl;
 
-    std::set<types::boundary_id> mirrors;
-    for (const auto &[id, fixed] : settings.geometry.dirichlet_boundaries)
-      if (settings.geometry.is_symmetry_plane(id))
-        mirrors.insert(id);
-    const auto wall = wall_thickness(design, mirrors);
+    const auto wall = wall_thickness(design, settings.geometry.symmetry_planes());
     on_rank_zero(comm, [&]() { write_wall_thickness_vtu(wall, out.file("wall_thickness.vtu")); });
     const double minimum = settings.castability.minimum_wall_thickness;
     // A ray without an opposite wall: the surface is not closed there.

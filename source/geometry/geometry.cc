@@ -403,4 +403,16 @@ namespace softopt
     const auto n_fixed = std::count(d->second.begin(), d->second.end(), true);
     return n_fixed > 0 && n_fixed < 3;
   }
+
+
+
+  std::set<types::boundary_id>
+  Geometry::symmetry_planes() const
+  {
+    std::set<types::boundary_id> ids;
+    for (const auto &[id, fixed] : dirichlet_boundaries)
+      if (is_symmetry_plane(id))
+        ids.insert(id);
+    return ids;
+  }
 } // namespace softopt

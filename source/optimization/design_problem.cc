@@ -343,6 +343,20 @@ namespace softopt
     for (unsigned int i = 0; i < n; ++i)
       remaining[i] = functionals_[i]->load_factors().size();
     Vector r, P, mu_a, mu_psi;
+    // Eq. adj3 with every shape term in dg/dX: (dr_psi/dpsi)^T mu_psi = dg/dpsi,
+    // then Eq. sens06: dg/dd = -mu_psi^T dr_psi/dd.
+    const auto through_filter = [&](const unsigned int i) {
+      TimerOutput::Scope scope(timer_output, "adjoint: filter");
+      filter.solve_adjoint(partials[i].d_dX, mu_psi);
+      result[i] = filter.design_gradient(mu_psi);
+    };
+    // A functional of the shape alone (no state) goes through the filter only.
+    for (unsigned int i = 0; i < n; ++i)
+      if (remaining[i] == 0)
+        {
+          functionals_[i]->evaluate(*problem, *design, {}, &partials[i]);
+          through_filter(i);
+        }
     // The last target first: after a warm start its tangent is assembled.
     for (auto target = x.states.rbegin(); target != x.states.rend(); ++target)
       {
@@ -389,12 +403,7 @@ namespace softopt
                 --remaining[i];
               }
             if (remaining[i] == 0 && result[i].size() == 0)
-              {
-                TimerOutput::Scope scope(timer_output, "adjoint: filter");
-                filter.solve_adjoint(partials[i].d_dX, mu_psi);
-                // Eq. sens06: dg/dd = -mu_psi^T dr_psi/dd
-                result[i] = filter.design_gradient(mu_psi);
-              }
+              through_filter(i);
           }
       }
     return result;

@@ -33,6 +33,17 @@ namespace softopt
                       "Every this many iterations the mesh coordinates are "
                       "updated, X_o <- X_o + psi and d <- 0, which frees the "
                       "box constraints again (0: never; the paper uses 50).");
+    prm.declare_entry("Mesh updates",
+                      "0",
+                      Patterns::Integer(0),
+                      "How many of those periodic mesh updates there are: "
+                      "after the last one the design moves within the box "
+                      "constraints about the last X_o only, which bounds how "
+                      "far it can go (0: no limit). The paper stops after "
+                      "three (gripper, extender, contractor) or four (the "
+                      "sequential actuators) of its 350 iterations. Updates "
+                      "of \"Remesh below quality\" and \"Mesh size "
+                      "schedule\" do not count.");
     prm.declare_entry("Remesh below quality",
                       "0",
                       Patterns::Double(0, 1),
@@ -234,6 +245,7 @@ namespace softopt
     move_limit           = prm.get_double("Move limit");
     design_bound         = prm.get_double("Design bound");
     mesh_update_interval = prm.get_integer("Mesh update interval");
+    mesh_updates         = prm.get_integer("Mesh updates");
     remesh_quality       = prm.get_double("Remesh below quality");
     output_interval      = prm.get_integer("Output interval");
     checkpoint_interval  = prm.get_integer("Checkpoint interval");

@@ -1,6 +1,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <softopt/io/output_directory.h>
+#include <softopt/physics/nodal_ad.h>
 #include <softopt/shape/boundary_faces.h>
 #include <softopt/shape/wall_thickness.h>
 
@@ -24,9 +25,12 @@ namespace softopt
     using Tree      = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
     /** The surface of @p corners (9 numbers a triangle) as indexed nodes
-     * and triangles; shared corners are equal to the last bit. */
+     * and triangles, with the design DoFs @p dofs (9 a triangle) of each
+     * node; shared corners are equal to the last bit. */
     void
-    index_surface(const std::vector<double> &corners, WallThickness &wall)
+    index_surface(const std::vector<double>                  &corners,
+                  const std::vector<types::global_dof_index> &dofs,
+                  WallThickness                              &wall)
     {
       std::map<std::array<double, 3>, unsigned int> index;
       for (std::size_t t = 0; t < corners.size(); t += 9)
@@ -38,7 +42,11 @@ namespace softopt
                 {corners[t + 3 * v], corners[t + 3 * v + 1], corners[t + 3 * v + 2]}};
               const auto [it, added] = index.emplace(p, wall.nodes.size());
               if (added)
-                wall.nodes.emplace_back(p[0], p[1], p[2]);
+                {
+                  wall.nodes.emplace_back(p[0], p[1], p[2]);
+                  wall.node_dofs.push_back(
+                    {{dofs[t + 3 * v], dofs[t + 3 * v + 1], dofs[t + 3 * v + 2]}});
+                }
               triangle[v] = it->second;
             }
           wall.triangles.push_back(triangle);
@@ -60,10 +68,15 @@ namespace softopt
       const auto point = [&](const Point<3> &p) { return Kernel::Point_3(p[0], p[1], p[2]); };
       const auto is_mirror = [&](const unsigned int t) { return mirrors.count(ids[t]) > 0; };
       Triangles                                                triangles;
-      std::vector<Tensor<1, 3>>                                unit_normal;
+      auto                                                    &unit_normal = wall.unit_normal;
       std::vector<Tensor<1, 3>>                                normal(wall.nodes.size());
-      std::vector<std::vector<unsigned int>>                   around(wall.nodes.size());
+      auto                                                    &around = wall.around;
+      around.assign(wall.nodes.size(), {});
       std::map<types::boundary_id, std::vector<unsigned int>> on_plane; // triangles per mirror
+      for (unsigned int t = 0; t < wall.triangles.size(); ++t)
+        wall.on_mirror.push_back(is_mirror(t));
+      wall.reflections.assign(wall.nodes.size(), {});
+      wall.hit.assign(wall.nodes.size(), WallThickness::none);
       for (unsigned int t = 0; t < wall.triangles.size(); ++t)
         {
           const auto &[a, b, c] = wall.triangles[t];
@@ -133,8 +146,10 @@ namespace softopt
               if (!is_mirror(t))
                 {
                   wall.thickness[i] = length;
+                  wall.hit[i]       = t;
                   break;
                 }
+              wall.reflections[i].push_back(t);
               // Reflected: it leaves that plane and cannot meet it again.
               direction -= 2 * (direction * unit_normal[t]) * unit_normal[t];
               from = at;
@@ -158,14 +173,15 @@ namespace softopt
   {
     const auto                      comm = design.get_dof_handler().get_communicator();
     std::vector<types::boundary_id> ids;
-    const auto    corners = gathered_boundary_triangles(design, &ids); // design.stl's
+    std::vector<types::global_dof_index> dofs;
+    const auto    corners = gathered_boundary_triangles(design, &ids, nullptr, &dofs); // design.stl's
     WallThickness wall;
     std::string   error;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
         try
           {
-            index_surface(corners, wall);
+            index_surface(corners, dofs, wall);
             shoot_rays(wall, ids, mirrors);
           }
         catch (const std::exception &e)
@@ -179,6 +195,97 @@ namespace softopt
     wall.where              = Utilities::MPI::broadcast(comm, wall.where, 0);
     wall.n_without_opposite = Utilities::MPI::broadcast(comm, wall.n_without_opposite, 0);
     return wall;
+  }
+
+
+
+  std::vector<std::pair<unsigned int, Tensor<1, 3>>>
+  thickness_gradient(const WallThickness &wall, const unsigned int i)
+  {
+    using AD = NodalAD::AD;
+    if (wall.hit[i] == WallThickness::none)
+      return {};
+    // The nodes the path depends on, each an independent variable (3 AD
+    // components); the symmetry planes' nodes are constants.
+    std::map<unsigned int, unsigned int> variable;
+    const auto add = [&](const unsigned int t) {
+      for (const unsigned int v : wall.triangles[t])
+        variable.emplace(v, variable.size());
+    };
+    variable.emplace(i, 0);
+    for (const unsigned int t : wall.around[i])
+      if (!wall.on_mirror[t])
+        add(t);
+    add(wall.hit[i]);
+    const unsigned int n = 3 * variable.size();
+    const auto         X = [&](const unsigned int v) {
+      Tensor<1, 3, AD> x;
+      const unsigned int k = variable.at(v);
+      for (unsigned int c = 0; c < 3; ++c)
+        x[c] = AD(n, 3 * k + c, wall.nodes[v][c]);
+      return x;
+    };
+    const auto constant = [](const Tensor<1, 3> &t) {
+      Tensor<1, 3, AD> x;
+      for (unsigned int c = 0; c < 3; ++c)
+        x[c] = t[c];
+      return x;
+    };
+    const auto normal_of = [&](const unsigned int t) {
+      const auto &[a, b, c] = wall.triangles[t];
+      const auto xa         = X(a);
+      return cross_product_3d(X(b) - xa, X(c) - xa);
+    };
+
+    // The ray as shoot_rays() cast it: the inward mean normal, projected
+    // onto the symmetry planes the node lies on and tilted into the body.
+    Tensor<1, 3, AD> normal;
+    Tensor<1, 3>     into_body;
+    for (const unsigned int t : wall.around[i])
+      if (!wall.on_mirror[t])
+        normal += normal_of(t);
+    for (const unsigned int t : wall.around[i])
+      if (wall.on_mirror[t])
+        {
+          normal -= (normal * wall.unit_normal[t]) * constant(wall.unit_normal[t]);
+          into_body -= wall.unit_normal[t];
+        }
+    // (AD temporaries: Sacado's expressions do not enter deal.II's tensors.)
+    const AD         normal_norm = std::sqrt(normal * normal);
+    Tensor<1, 3, AD> direction   = -normal / normal_norm;
+    if (into_body.norm() > 0)
+      {
+        direction += constant(1e-6 * into_body / into_body.norm());
+        const AD direction_norm = std::sqrt(direction * direction);
+        direction /= direction_norm;
+      }
+    // Plane by plane: the distance s along the ray to the plane through p
+    // with normal m is (p - x) . m / (direction . m).
+    Tensor<1, 3, AD> from   = X(i);
+    AD               length = 0;
+    for (const unsigned int t : wall.reflections[i])
+      {
+        const Tensor<1, 3, AD> m = constant(wall.unit_normal[t]);
+        const Tensor<1, 3, AD> p = constant(wall.nodes[wall.triangles[t][0]]);
+        const AD               s = ((p - from) * m) / (direction * m);
+        from += s * direction;
+        length += s;
+        const AD twice_normal_part = 2. * (direction * m);
+        direction -= twice_normal_part * m;
+      }
+    const unsigned int     t = wall.hit[i];
+    const Tensor<1, 3, AD> m = normal_of(t);
+    length += ((X(wall.triangles[t][0]) - from) * m) / (direction * m);
+
+    std::vector<std::pair<unsigned int, Tensor<1, 3>>> gradient;
+    for (const auto &[v, k] : variable)
+      {
+        Tensor<1, 3> d;
+        for (unsigned int c = 0; c < 3; ++c)
+          d[c] = length.size() > 0 ? length.dx(3 * k + c) : 0.;
+        gradient.emplace_back(v, d);
+      }
+    return gradient;
   }
 
 

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -60,6 +61,10 @@ namespace softopt
      * surface. */
     bool
     is_symmetry_plane(const types::boundary_id id) const;
+
+    /** The boundary ids that are symmetry planes. */
+    std::set<types::boundary_id>
+    symmetry_planes() const;
 
     /** Boundary ids of the closed cavity's walls (the follower pressure). */
     std::vector<types::boundary_id> pressure_boundary_ids;

@@ -27,6 +27,8 @@ namespace softopt
     /** |d| <= design bound, in mm. */
     double design_bound = 1.2;
     unsigned int mesh_update_interval = 50;
+    /** How many of those periodic mesh updates there are (0: no limit). */
+    unsigned int mesh_updates = 0;
     /** A mesh update remeshes the design when its worst element quality
      * is below this, and an accepted design below it brings the update
      * forward (0: never). */
@@ -62,6 +64,14 @@ namespace softopt
      * tried again at the next one. */
     double
     scheduled_mesh_size(const unsigned int k, const long mesh_made_at) const;
+
+    /** Whether iteration @p k is one of the periodic mesh updates. */
+    bool
+    periodic_mesh_update(const unsigned int k) const
+    {
+      return every(k, mesh_update_interval) &&
+             (mesh_updates == 0 || k / mesh_update_interval <= mesh_updates);
+    }
 
     /** Whether iteration @p k > 0 is one of every @p interval (0: none). */
     static bool

@@ -19,6 +19,11 @@ namespace softopt
     /** midpoint[k]: the midside node of the edge opposite corner k. */
     std::array<Point<3>, 3> midpoint;
     types::boundary_id      boundary_id;
+    /** The design DoFs (x, y, z) of each corner and midside node, in the
+     * order of corner and midpoint: what a shape derivative adds to. */
+    using NodeDofs = std::array<types::global_dof_index, 3>;
+    std::array<NodeDofs, 3> corner_dofs;
+    std::array<NodeDofs, 3> midpoint_dofs;
   };
 
   /** A displacement u on the design's mesh (a state of the physics: its
@@ -45,13 +50,20 @@ namespace softopt
   std::array<std::array<Point<3>, 3>, 4>
   flat_triangles(const BoundaryFace &face);
 
+  /** The design DoFs of the corners of flat_triangles(@p face), alike. */
+  std::array<std::array<BoundaryFace::NodeDofs, 3>, 4>
+  flat_triangle_dofs(const BoundaryFace &face);
+
   /** The flat triangles of every boundary face of the mesh, 9 numbers
    * each (x, y, z of its three corners), gathered on rank 0 (empty on the
-   * others), and with @p boundary_ids the boundary id of each. Collective. */
+   * others), and with @p boundary_ids the boundary id of each, with
+   * @p dofs the design DoFs of each corner (9 a triangle, as the numbers).
+   * Collective. */
   std::vector<double>
-  gathered_boundary_triangles(const DesignConfiguration       &design,
-                              std::vector<types::boundary_id> *boundary_ids = nullptr,
-                              const Deformation               *deformation  = nullptr);
+  gathered_boundary_triangles(const DesignConfiguration            &design,
+                              std::vector<types::boundary_id>      *boundary_ids = nullptr,
+                              const Deformation                    *deformation  = nullptr,
+                              std::vector<types::global_dof_index> *dofs         = nullptr);
 } // namespace softopt
 
 #endif

@@ -3,6 +3,7 @@
 
 #include <deal.II/base/point.h>
 
+#include <softopt/shape/boundary_faces.h>
 #include <softopt/shape/design_configuration.h>
 
 #include <array>
@@ -31,6 +32,20 @@ namespace softopt
     /** Nodes of the part's surface whose ray found no opposite wall (none
      * on a closed surface; a sign of a surface that is not). */
     unsigned int n_without_opposite = 0;
+
+    /** The design DoFs of each node. */
+    std::vector<BoundaryFace::NodeDofs> node_dofs;
+
+    /** How each ray went, for thickness_gradient(): the triangles around
+     * each node, which triangles lie on a symmetry plane (with their unit
+     * normals), and per node the planes' triangles its ray was reflected
+     * at and the triangle it ended on (none: no finite thickness). */
+    std::vector<std::vector<unsigned int>> around;
+    std::vector<bool>                      on_mirror;
+    std::vector<Tensor<1, 3>>              unit_normal;
+    std::vector<std::vector<unsigned int>> reflections;
+    static constexpr unsigned int          none = static_cast<unsigned int>(-1);
+    std::vector<unsigned int>              hit;
   };
 
   /**
@@ -47,6 +62,19 @@ namespace softopt
    */
   WallThickness
   wall_thickness(const DesignConfiguration &design, const std::set<types::boundary_id> &mirrors);
+
+  /**
+   * The derivative of @p wall's thickness at node @p i with respect to the
+   * positions of the nodes it depends on: the node itself and the nodes
+   * of the triangles around it (its normal, their area-weighted mean), the
+   * corners of the triangle its ray ends on (through that triangle's
+   * plane), with the symmetry planes held fixed (their nodes slide in
+   * them). The ray thickness is smooth while the ray stays on the same
+   * triangles: piecewise smooth and continuous in the positions. Empty
+   * where the thickness is not finite. On rank 0, after wall_thickness().
+   */
+  std::vector<std::pair<unsigned int, Tensor<1, 3>>>
+  thickness_gradient(const WallThickness &wall, const unsigned int i);
 
   /** Writes @p wall as a ParaView surface (.vtu) with the point field
    * wall_thickness_mm into @p file (rank 0's call writes). */

@@ -1,0 +1,131 @@
+// A geometric quantity: how far the walls of the design fall below a
+// minimum thickness.
+
+#include <deal.II/base/mpi.h>
+
+#include <softopt/functionals/quantity.h>
+#include <softopt/shape/wall_thickness.h>
+
+#include <cmath>
+
+namespace softopt
+{
+  namespace
+  {
+    /** Whether node @p i of @p wall lies on a smooth part of the surface:
+     * not on a symmetry plane, and no triangle around it turned more than
+     * 30 degrees from their mean normal. At the part's edges and corners
+     * the ray along the mean normal grazes the surface, and its length
+     * jumps with the shape; the nodes next to them measure those walls. */
+    bool
+    smooth_at(const WallThickness &wall, const unsigned int i)
+    {
+      Tensor<1, 3> mean;
+      for (const unsigned int t : wall.around[i])
+        {
+          if (wall.on_mirror[t])
+            return false;
+          mean += wall.unit_normal[t];
+        }
+      for (const unsigned int t : wall.around[i])
+        if (wall.unit_normal[t] * mean < std::cos(numbers::PI / 6) * mean.norm())
+          return false;
+      return true;
+    }
+
+    /**
+     * Q = 1/N sum_i max(0, 1 - t_i / t_min)^2 over the N nodes i where
+     * the surface is smooth (smooth_at(); a node passing 30 degrees
+     * changes N, a small jump that MMA takes as it comes), with t_i the wall thickness at node i
+     * (the ray along the inward normal to the opposite surface,
+     * castability's measure) and t_min the entry "Minimum thickness":
+     * 0 while every wall is at
+     * least t_min thick, and growing smoothly (continuous derivative) as
+     * walls thin below it. As a constraint (Q <= Tolerance) it keeps the
+     * walls castable and several elements of a mesh thick, where the
+     * model converges (doc/theory.md, "Walls the mesh resolves"). It
+     * reads no state: it depends on the shape X = X_o + psi only.
+     */
+    class ThinWalls : public Quantity
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &prm)
+      {
+        prm.declare_entry("Minimum thickness",
+                          "1",
+                          Patterns::Double(0),
+                          "thin walls: the wall thickness t_min below which "
+                          "a node counts (mm).");
+      }
+
+      ThinWalls(ParameterHandler &prm, const InputFile &input, const std::string &subsection,
+                const double)
+        : Quantity({})
+        , minimum(prm.get_double("Minimum thickness"))
+      {
+        AssertThrow(minimum > 0,
+                    ExcMessage(input.where(subsection, "Minimum thickness") +
+                               ": the minimum thickness must be positive (mm)."));
+      }
+
+      double
+      value(const HyperelasticProblem &problem,
+            const DesignConfiguration &design,
+            const States &,
+            Derivatives *derivatives) const override
+      {
+        const MPI_Comm comm = problem.get_communicator();
+        const auto wall = wall_thickness(design, problem.get_geometry().symmetry_planes());
+        // On rank 0, which holds the surface: Q and dQ/dX on the nodes.
+        double                               Q = 0;
+        std::vector<types::global_dof_index> dofs;
+        std::vector<double>                  d_dX;
+        if (Utilities::MPI::this_mpi_process(comm) == 0)
+          {
+            std::vector<unsigned int> smooth;
+            for (unsigned int i = 0; i < wall.nodes.size(); ++i)
+              if (smooth_at(wall, i))
+                smooth.push_back(i);
+            const unsigned int n = smooth.size();
+            for (const unsigned int i : smooth)
+              {
+                const double shortfall = 1 - wall.thickness[i] / minimum;
+                if (!std::isfinite(wall.thickness[i]) || shortfall <= 0)
+                  continue;
+                Q += shortfall * shortfall / n;
+                if (derivatives == nullptr)
+                  continue;
+                // dQ/dt_i = -2 shortfall / (n t_min)
+                const double dQ_dt = -2 * shortfall / (n * minimum);
+                for (const auto &[node, dt_dx] : thickness_gradient(wall, i))
+                  for (unsigned int c = 0; c < 3; ++c)
+                    {
+                      dofs.push_back(wall.node_dofs[node][c]);
+                      d_dX.push_back(dQ_dt * dt_dx[c]);
+                    }
+              }
+          }
+        if (derivatives != nullptr)
+          {
+            derivatives->d_da.clear();
+            derivatives->d_dX = design.create_vector();
+            if (!dofs.empty()) // rank 0 adds to every rank's entries
+              derivatives->d_dX.add(dofs, d_dX);
+            derivatives->d_dX.compress(VectorOperation::add);
+          }
+        return Utilities::MPI::broadcast(comm, Q, 0);
+      }
+
+    private:
+      const double minimum;
+    };
+  } // namespace
+
+  SOFTOPT_REGISTER_QUANTITY(ThinWalls,
+                            "thin walls",
+                            "the mean over the surface nodes of max(0, 1 - t / "
+                            "t_min)^2, t the wall thickness there and t_min "
+                            "\"Minimum thickness\"; of the shape only, 0 while "
+                            "every wall is t_min thick (dimensionless).")
+} // namespace softopt
