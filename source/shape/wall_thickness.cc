@@ -111,7 +111,7 @@ namespace softopt
                 skip.insert(skip.end(), on_plane[ids[t]].begin(), on_plane[ids[t]].end());
               }
           Point<3>     from      = wall.nodes[i];
-          Tensor<1, 3> direction = -normal[i] / normal[i].norm();
+          Tensor<1, 3> direction = (wall.outward ? 1. : -1.) * normal[i] / normal[i].norm();
           // A ray exactly in a plane runs along the faces of the AABB boxes,
           // where CGAL's slab test is undecided: tilt it into the body by
           // 1e-6 rad, which changes the thickness by 1e-12 relative.
@@ -169,13 +169,16 @@ namespace softopt
 
 
   WallThickness
-  wall_thickness(const DesignConfiguration &design, const std::set<types::boundary_id> &mirrors)
+  wall_thickness(const DesignConfiguration          &design,
+                 const std::set<types::boundary_id> &mirrors,
+                 const bool                          outward)
   {
     const auto                      comm = design.get_dof_handler().get_communicator();
     std::vector<types::boundary_id> ids;
     std::vector<types::global_dof_index> dofs;
     const auto    corners = gathered_boundary_triangles(design, &ids, nullptr, &dofs); // design.stl's
     WallThickness wall;
+    wall.outward = outward;
     std::string   error;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       {
@@ -252,7 +255,7 @@ namespace softopt
         }
     // (AD temporaries: Sacado's expressions do not enter deal.II's tensors.)
     const AD         normal_norm = std::sqrt(normal * normal);
-    Tensor<1, 3, AD> direction   = -normal / normal_norm;
+    Tensor<1, 3, AD> direction   = (wall.outward ? 1. : -1.) * normal / normal_norm;
     if (into_body.norm() > 0)
       {
         direction += constant(1e-6 * into_body / into_body.norm());

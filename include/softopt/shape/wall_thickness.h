@@ -33,6 +33,10 @@ namespace softopt
      * on a closed surface; a sign of a surface that is not). */
     unsigned int n_without_opposite = 0;
 
+    /** Whether the rays went along the outward normal (gaps outside the
+     * part) instead of the inward one (its walls). */
+    bool outward = false;
+
     /** The design DoFs of each node. */
     std::vector<BoundaryFace::NodeDofs> node_dofs;
 
@@ -57,11 +61,16 @@ namespace softopt
    * starts there, a node on their rim takes the normal projected onto the
    * plane, and a ray that meets one is reflected (the body goes on beyond
    * it). On a thick sphere octant the thickness is B - A at every
-   * node of its spherical surfaces. Collective; the result is on rank 0
+   * node of its spherical surfaces. With @p outward the rays go along the
+   * outward normal instead: the gap to the next surface outside the part
+   * (between two folds of a bellows: a wall of the mold; across the
+   * cavity: its core), infinite where the ray leaves. Collective; the result is on rank 0
    * (minimum and where on every rank).
    */
   WallThickness
-  wall_thickness(const DesignConfiguration &design, const std::set<types::boundary_id> &mirrors);
+  wall_thickness(const DesignConfiguration          &design,
+                 const std::set<types::boundary_id> &mirrors,
+                 const bool                          outward = false);
 
   /**
    * The derivative of @p wall's thickness at node @p i with respect to the

@@ -41,7 +41,8 @@ namespace softopt
      * castability's measure) and t_min the entry "Minimum thickness":
      * 0 while every wall is at
      * least t_min thick, and growing smoothly (continuous derivative) as
-     * walls thin below it. As a constraint (Q <= Tolerance) it keeps the
+     * walls thin below it; with a "Minimum gap" g_min the same sum over
+     * the gaps g_i outside the part is added. As a constraint (Q <= Tolerance) it keeps the
      * walls castable and several elements of a mesh thick, where the
      * model converges (doc/theory.md, "Walls the mesh resolves"). It
      * reads no state: it depends on the shape X = X_o + psi only.
@@ -57,12 +58,22 @@ namespace softopt
                           Patterns::Double(0),
                           "thin walls: the wall thickness t_min below which "
                           "a node counts (mm).");
+        prm.declare_entry("Minimum gap",
+                          "0",
+                          Patterns::Double(0),
+                          "thin walls: the gap g_min outside the part (along "
+                          "the outward normal to the next surface: between "
+                          "the folds of a bellows, a wall of the mold) below "
+                          "which a node counts too (mm; 0: gaps are not "
+                          "measured). Gaps that close make the surface "
+                          "intersect itself, a design that is refused.");
       }
 
       ThinWalls(ParameterHandler &prm, const InputFile &input, const std::string &subsection,
                 const double)
         : Quantity({})
         , minimum(prm.get_double("Minimum thickness"))
+        , minimum_gap(prm.get_double("Minimum gap"))
       {
         AssertThrow(minimum > 0,
                     ExcMessage(input.where(subsection, "Minimum thickness") +
@@ -75,37 +86,41 @@ namespace softopt
             const States &,
             Derivatives *derivatives) const override
       {
-        const MPI_Comm comm = problem.get_communicator();
-        const auto wall = wall_thickness(design, problem.get_geometry().symmetry_planes());
+        const MPI_Comm comm    = problem.get_communicator();
+        const auto     mirrors = problem.get_geometry().symmetry_planes();
         // On rank 0, which holds the surface: Q and dQ/dX on the nodes.
         double                               Q = 0;
         std::vector<types::global_dof_index> dofs;
         std::vector<double>                  d_dX;
-        if (Utilities::MPI::this_mpi_process(comm) == 0)
-          {
-            std::vector<unsigned int> smooth;
-            for (unsigned int i = 0; i < wall.nodes.size(); ++i)
-              if (smooth_at(wall, i))
-                smooth.push_back(i);
-            const unsigned int n = smooth.size();
-            for (const unsigned int i : smooth)
-              {
-                const double shortfall = 1 - wall.thickness[i] / minimum;
-                if (!std::isfinite(wall.thickness[i]) || shortfall <= 0)
-                  continue;
-                Q += shortfall * shortfall / n;
-                if (derivatives == nullptr)
-                  continue;
-                // dQ/dt_i = -2 shortfall / (n t_min)
-                const double dQ_dt = -2 * shortfall / (n * minimum);
-                for (const auto &[node, dt_dx] : thickness_gradient(wall, i))
-                  for (unsigned int c = 0; c < 3; ++c)
-                    {
-                      dofs.push_back(wall.node_dofs[node][c]);
-                      d_dX.push_back(dQ_dt * dt_dx[c]);
-                    }
-              }
-          }
+        const auto add = [&](const WallThickness &wall, const double at_least) {
+          if (Utilities::MPI::this_mpi_process(comm) != 0)
+            return;
+          std::vector<unsigned int> smooth;
+          for (unsigned int i = 0; i < wall.nodes.size(); ++i)
+            if (smooth_at(wall, i))
+              smooth.push_back(i);
+          const unsigned int n = smooth.size();
+          for (const unsigned int i : smooth)
+            {
+              const double shortfall = 1 - wall.thickness[i] / at_least;
+              if (!std::isfinite(wall.thickness[i]) || shortfall <= 0)
+                continue;
+              Q += shortfall * shortfall / n;
+              if (derivatives == nullptr)
+                continue;
+              // dQ/dt_i = -2 shortfall / (n t_min)
+              const double dQ_dt = -2 * shortfall / (n * at_least);
+              for (const auto &[node, dt_dx] : thickness_gradient(wall, i))
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    dofs.push_back(wall.node_dofs[node][c]);
+                    d_dX.push_back(dQ_dt * dt_dx[c]);
+                  }
+            }
+        };
+        add(wall_thickness(design, mirrors), minimum);
+        if (minimum_gap > 0)
+          add(wall_thickness(design, mirrors, true), minimum_gap);
         if (derivatives != nullptr)
           {
             derivatives->d_da.clear();
@@ -119,6 +134,7 @@ namespace softopt
 
     private:
       const double minimum;
+      const double minimum_gap;
     };
   } // namespace
 
@@ -126,6 +142,8 @@ namespace softopt
                             "thin walls",
                             "the mean over the surface nodes of max(0, 1 - t / "
                             "t_min)^2, t the wall thickness there and t_min "
-                            "\"Minimum thickness\"; of the shape only, 0 while "
-                            "every wall is t_min thick (dimensionless).")
+                            "\"Minimum thickness\" (plus the same of the gaps "
+                            "outside the part with \"Minimum gap\"); of the "
+                            "shape only, 0 while every wall is t_min thick "
+                            "(dimensionless).")
 } // namespace softopt
