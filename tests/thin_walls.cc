@@ -4,8 +4,8 @@
 //   triangles' chord error of 0.01 mm allows (castability's bound);
 // - its adjoint gradient (ray thickness through node, normal and hit
 //   triangle, then the filter) against a Taylor expansion along a random
-//   design direction, on the sphere (rays along its symmetry planes) and
-//   on the actuator of Table I (walls of 1.5 mm below t_min = 2 mm, and
+//   design direction, on the sphere (nodes on its symmetry planes left out)
+//   and on the actuator of Table I (walls of 1.5 mm below t_min = 2 mm, and
 //   the gaps across the cavity, 20 mm, below g_min = 25 mm), at a
 //   design 0.2 mm off the initial one along another random direction: in
 //   the initial mesh the ray of the node at (1.5, 0, 11.5) runs in the

@@ -106,7 +106,10 @@ namespace softopt
                 << (objective ? "lower" : "higher") << " is "
                 << (objective ? "better" : "worse") << "): ";
           if (f.load_factors().empty())
-            pcout << e.at_target << " (of the shape alone)";
+            {
+              pcout << e.at_target << " (of the shape alone)" << std::endl;
+              continue;
+            }
           else if (std::isnan(e.at_target))
             pcout << "target " << target_kPa << " kPa not on the path";
           else
@@ -199,13 +202,16 @@ namespace softopt
                                    CsvWriter::format(mean_in)};
       for (unsigned int i = 0; i < functionals.size(); ++i)
         {
-          const Functional &f     = *functionals[i];
-          const double      value = f.evaluate_at(problem, design, state);
+          const Functional &f           = *functionals[i];
+          const bool        shape_alone = f.load_factors().empty();
+          // (One of the shape alone, like thin walls, is the same all along.)
+          const double value = shape_alone && !std::isnan(extrema[i].at_target) ?
+                                 extrema[i].at_target :
+                                 f.evaluate_at(problem, design, state);
           row.push_back(CsvWriter::format(value));
           extrema[i].add(value, p_kPa);
-          // (A functional of the shape alone holds at every target.)
-          if (point.at_target && (f.load_factors().empty() || (f.load_factors().size() == 1 &&
-                                                                f.load_factors()[0] == point.load_factor)))
+          if (shape_alone || (point.at_target && f.load_factors().size() == 1 &&
+                              f.load_factors()[0] == point.load_factor))
             extrema[i].at_target = value;
         }
       row.push_back(std::to_string(point.newton_iterations));

@@ -60,7 +60,10 @@ namespace softopt
       {
         const auto &load_factors = functionals[k]->load_factors();
         pcout << "  " << functionals[k]->name() << " = " << std::setprecision(10)
-              << values[k] << " at load factor" << (load_factors.size() > 1 ? "s " : " ");
+              << values[k]
+              << (load_factors.empty()     ? " (of the shape alone)" :
+                  load_factors.size() > 1 ? " at load factors " :
+                                            " at load factor ");
         for (unsigned int i = 0; i < load_factors.size(); ++i)
           pcout << (i > 0 ? ", " : "") << load_factors[i];
         pcout << std::endl;

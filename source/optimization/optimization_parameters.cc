@@ -40,8 +40,9 @@ namespace softopt
                       "after the last one the design moves within the box "
                       "constraints about the last X_o only, which bounds how "
                       "far it can go (0: no limit). The paper stops after "
-                      "three (gripper, extender, contractor) or four (the "
-                      "sequential actuators) of its 350 iterations. Updates "
+                      "three (gripper, extender, contractor) or four "
+                      "(grip_extend; grip_contract is not stated) of its "
+                      "350 iterations. Updates "
                       "of \"Remesh below quality\" and \"Mesh size "
                       "schedule\" do not count.");
     prm.declare_entry("Remesh below quality",

@@ -77,6 +77,7 @@ namespace softopt
         wall.on_mirror.push_back(is_mirror(t));
       wall.reflections.assign(wall.nodes.size(), {});
       wall.hit.assign(wall.nodes.size(), WallThickness::none);
+      wall.differentiable.assign(wall.nodes.size(), false);
       for (unsigned int t = 0; t < wall.triangles.size(); ++t)
         {
           const auto &[a, b, c] = wall.triangles[t];
@@ -147,6 +148,13 @@ namespace softopt
                 {
                   wall.thickness[i] = length;
                   wall.hit[i]       = t;
+                  // thickness_gradient() for a straight ray from a node off
+                  // the planes that crosses its triangle at more than 3
+                  // degrees (not along it: there the length jumps).
+                  wall.differentiable[i] =
+                    wall.reflections[i].empty() && into_body.norm() == 0 &&
+                    boost::get<Kernel::Point_3>(&hit->first) != nullptr &&
+                    std::abs(direction * unit_normal[t]) > 0.05;
                   break;
                 }
               wall.reflections[i].push_back(t);
@@ -206,10 +214,10 @@ namespace softopt
   thickness_gradient(const WallThickness &wall, const unsigned int i)
   {
     using AD = NodalAD::AD;
-    if (wall.hit[i] == WallThickness::none)
+    if (!wall.differentiable[i])
       return {};
-    // The nodes the path depends on, each an independent variable (3 AD
-    // components); the symmetry planes' nodes are constants.
+    // The nodes the ray depends on, each an independent variable (3 AD
+    // components).
     std::map<unsigned int, unsigned int> variable;
     const auto add = [&](const unsigned int t) {
       for (const unsigned int v : wall.triangles[t])
@@ -217,8 +225,7 @@ namespace softopt
     };
     variable.emplace(i, 0);
     for (const unsigned int t : wall.around[i])
-      if (!wall.on_mirror[t])
-        add(t);
+      add(t);
     add(wall.hit[i]);
     const unsigned int n = 3 * variable.size();
     const auto         X = [&](const unsigned int v) {
@@ -228,57 +235,25 @@ namespace softopt
         x[c] = AD(n, 3 * k + c, wall.nodes[v][c]);
       return x;
     };
-    const auto constant = [](const Tensor<1, 3> &t) {
-      Tensor<1, 3, AD> x;
-      for (unsigned int c = 0; c < 3; ++c)
-        x[c] = t[c];
-      return x;
-    };
     const auto normal_of = [&](const unsigned int t) {
       const auto &[a, b, c] = wall.triangles[t];
       const auto xa         = X(a);
       return cross_product_3d(X(b) - xa, X(c) - xa);
     };
 
-    // The ray as shoot_rays() cast it: the inward mean normal, projected
-    // onto the symmetry planes the node lies on and tilted into the body.
+    // The ray as shoot_rays() cast it, along the mean normal, and the
+    // distance to the plane through corner a of the hit triangle with its
+    // normal m: (X_a - X_i) . m / (direction . m).
     Tensor<1, 3, AD> normal;
-    Tensor<1, 3>     into_body;
     for (const unsigned int t : wall.around[i])
-      if (!wall.on_mirror[t])
-        normal += normal_of(t);
-    for (const unsigned int t : wall.around[i])
-      if (wall.on_mirror[t])
-        {
-          normal -= (normal * wall.unit_normal[t]) * constant(wall.unit_normal[t]);
-          into_body -= wall.unit_normal[t];
-        }
+      normal += normal_of(t);
     // (AD temporaries: Sacado's expressions do not enter deal.II's tensors.)
-    const AD         normal_norm = std::sqrt(normal * normal);
-    Tensor<1, 3, AD> direction   = (wall.outward ? 1. : -1.) * normal / normal_norm;
-    if (into_body.norm() > 0)
-      {
-        direction += constant(1e-6 * into_body / into_body.norm());
-        const AD direction_norm = std::sqrt(direction * direction);
-        direction /= direction_norm;
-      }
-    // Plane by plane: the distance s along the ray to the plane through p
-    // with normal m is (p - x) . m / (direction . m).
-    Tensor<1, 3, AD> from   = X(i);
-    AD               length = 0;
-    for (const unsigned int t : wall.reflections[i])
-      {
-        const Tensor<1, 3, AD> m = constant(wall.unit_normal[t]);
-        const Tensor<1, 3, AD> p = constant(wall.nodes[wall.triangles[t][0]]);
-        const AD               s = ((p - from) * m) / (direction * m);
-        from += s * direction;
-        length += s;
-        const AD twice_normal_part = 2. * (direction * m);
-        direction -= twice_normal_part * m;
-      }
+    const AD               normal_norm = std::sqrt(normal * normal);
+    const Tensor<1, 3, AD> direction   = (wall.outward ? 1. : -1.) * normal / normal_norm;
+    const Tensor<1, 3, AD> from        = X(i);
     const unsigned int     t = wall.hit[i];
     const Tensor<1, 3, AD> m = normal_of(t);
-    length += ((X(wall.triangles[t][0]) - from) * m) / (direction * m);
+    const AD               length = ((X(wall.triangles[t][0]) - from) * m) / (direction * m);
 
     std::vector<std::pair<unsigned int, Tensor<1, 3>>> gradient;
     for (const auto &[v, k] : variable)

@@ -29,8 +29,9 @@ namespace softopt
     /** The smallest thickness and the node where it occurs. */
     double   minimum = std::numeric_limits<double>::infinity();
     Point<3> where;
-    /** Nodes of the part's surface whose ray found no opposite wall (none
-     * on a closed surface; a sign of a surface that is not). */
+    /** Nodes of the part's surface whose ray found no opposite wall (for
+     * the inward rays none on a closed surface, a sign of a surface that is
+     * not; for the outward ones the rays that leave). */
     unsigned int n_without_opposite = 0;
 
     /** Whether the rays went along the outward normal (gaps outside the
@@ -40,16 +41,20 @@ namespace softopt
     /** The design DoFs of each node. */
     std::vector<BoundaryFace::NodeDofs> node_dofs;
 
-    /** How each ray went, for thickness_gradient(): the triangles around
-     * each node, which triangles lie on a symmetry plane (with their unit
-     * normals), and per node the planes' triangles its ray was reflected
-     * at and the triangle it ended on (none: no finite thickness). */
+    /** How each ray went: the triangles around each node, which
+     * triangles lie on a symmetry plane, the triangles' unit normals, and
+     * per node the planes' triangles its ray was reflected at, the
+     * triangle it ended on (none: no finite thickness), and whether
+     * thickness_gradient() has its derivative: a straight ray (no
+     * reflection) from a node off the planes that crosses its triangle at
+     * more than 3 degrees. */
     std::vector<std::vector<unsigned int>> around;
     std::vector<bool>                      on_mirror;
     std::vector<Tensor<1, 3>>              unit_normal;
     std::vector<std::vector<unsigned int>> reflections;
     static constexpr unsigned int          none = static_cast<unsigned int>(-1);
     std::vector<unsigned int>              hit;
+    std::vector<bool>                      differentiable;
   };
 
   /**
@@ -74,13 +79,14 @@ namespace softopt
 
   /**
    * The derivative of @p wall's thickness at node @p i with respect to the
-   * positions of the nodes it depends on: the node itself and the nodes
-   * of the triangles around it (its normal, their area-weighted mean), the
-   * corners of the triangle its ray ends on (through that triangle's
-   * plane), with the symmetry planes held fixed (their nodes slide in
-   * them). The ray thickness is smooth while the ray stays on the same
-   * triangles: piecewise smooth and continuous in the positions. Empty
-   * where the thickness is not finite. On rank 0, after wall_thickness().
+   * positions of the nodes it depends on: the node itself and the corners
+   * of the triangles around it (its direction, their area-weighted mean
+   * normal), and the corners of the triangle its ray ends on (through that
+   * triangle's plane). The ray thickness is smooth while the ray stays on
+   * the same triangle: piecewise smooth and continuous in the positions.
+   * Empty where wall.differentiable[i] is not set (reflected rays, nodes
+   * on symmetry planes, rays along a triangle). On rank 0, after
+   * wall_thickness().
    */
   std::vector<std::pair<unsigned int, Tensor<1, 3>>>
   thickness_gradient(const WallThickness &wall, const unsigned int i);
