@@ -140,9 +140,10 @@ namespace softopt
               for (unsigned int d = 0; d < 3; ++d)
                 local.push_back(p[d]);
           }
-        for (const auto &t : flat_triangle_dofs(face))
-          for (const auto &node : t)
-            local_dofs.insert(local_dofs.end(), node.begin(), node.end());
+        if (dofs)
+          for (const auto &t : flat_triangle_dofs(face))
+            for (const auto &node : t)
+              local_dofs.insert(local_dofs.end(), node.begin(), node.end());
       }
     std::vector<double> all;
     for (const auto &part : Utilities::MPI::gather(comm, local, 0))
