@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <map>
 #include <tuple>
 
 
@@ -93,7 +94,7 @@ namespace softopt
           const bool  objective = f.kind() == Functional::Kind::objective;
           const char *kind      = objective ? "objective" : "constraint";
           const double target_kPa =
-            f.load_factors().size() == 1 ? f.load_factors()[0] * pressure_kPa : std::nan("");
+            f.load_factors().empty() ? std::nan("") : f.load_factors().back() * pressure_kPa;
           summary.add_row({f.name(),
                            kind,
                            CsvWriter::format(target_kPa),
@@ -188,8 +189,11 @@ namespace softopt
     std::vector<Extrema> extrema(functionals.size());
     unsigned int         vtu_counter = 0;
     bool                 in_contact  = false;
+    std::map<double, HyperelasticProblem::Vector> target_states;
     const auto   record      = [&](const PathFollowing::PathPoint  &point,
                             const HyperelasticProblem::Vector &state) {
+      if (point.at_target)
+        target_states[point.load_factor] = state;
       const double volume           = cavity_volume(problem, design, state);
       const auto [mean_ux, mean_in] = design_means(problem, design, state);
       const double p_kPa = point.load_factor * settings.loading.pressure_kPa;
@@ -203,11 +207,25 @@ namespace softopt
       for (unsigned int i = 0; i < functionals.size(); ++i)
         {
           const Functional &f           = *functionals[i];
-          const bool        shape_alone = f.load_factors().empty();
-          // (One of the shape alone, like thin walls, is the same all along.)
-          const double value = shape_alone && !std::isnan(extrema[i].at_target) ?
-                                 extrema[i].at_target :
-                                 f.evaluate_at(problem, design, state);
+          const auto       &lf          = f.load_factors();
+          const bool        shape_alone = lf.empty();
+          // One of the shape alone (thin walls) is the same all along; one of
+          // several states (compliance ratio) has a value only at the last of
+          // its targets, once the path has passed them all.
+          double value = std::nan("");
+          if (shape_alone && !std::isnan(extrema[i].at_target))
+            value = extrema[i].at_target;
+          else if (lf.size() <= 1)
+            value = f.evaluate_at(problem, design, state);
+          else if (point.at_target && point.load_factor == lf.back())
+            {
+              Functional::States at;
+              for (const double l : lf)
+                if (const auto it = target_states.find(l); it != target_states.end())
+                  at.push_back(&it->second);
+              if (at.size() == lf.size())
+                extrema[i].at_target = value = f.evaluate(problem, design, at, nullptr);
+            }
           row.push_back(CsvWriter::format(value));
           extrema[i].add(value, p_kPa);
           if (shape_alone || (point.at_target && f.load_factors().size() == 1 &&
@@ -328,8 +346,13 @@ namespace softopt
     const OutputDirectory out(settings.output_directory, comm);
     out.write_parameters(settings.prm);
     std::vector<const Functional *> functionals;
+    std::vector<double>             targets = settings.loading.target_load_factors;
     for (const auto &f : settings.functionals)
-      functionals.push_back(f.get());
+      {
+        functionals.push_back(f.get());
+        // The path lands on every functional's load factors too.
+        targets.insert(targets.end(), f->load_factors().begin(), f->load_factors().end());
+      }
 
     Timer path_timer;
     const PathFollowing::Result result =
@@ -337,7 +360,7 @@ namespace softopt
                        design,
                        settings,
                        functionals,
-                       settings.loading.target_load_factors,
+                       targets,
                        out.path(),
                        pcout);
     path_timer.stop();

@@ -35,7 +35,8 @@ namespace softopt
     prm.declare_entry("Initial load increment",
                       "1",
                       Patterns::Double(1e-12, 1),
-                      "The first load factor increment (halved until Newton "
+                      "The first load factor increment (at most the maximum "
+                      "one; halved until Newton "
                       "converges). Without a limit point the equilibrium at a "
                       "target does not depend on the path, so one large "
                       "step is cheapest; smaller maximum increments give "
@@ -149,7 +150,7 @@ namespace softopt
     const auto size_of = [&](const double load_increment) {
       return arclength ? arclength->arclength_of(load_increment) : load_increment;
     };
-    double size = size_of(parameters.initial_increment);
+    double size = size_of(std::min(parameters.initial_increment, parameters.maximum_increment));
     if (arclength)
       size = std::min(size,
                       arclength->arclength_of_state_change(
