@@ -9,6 +9,7 @@
 #include <softopt/functionals/direction_field.h>
 #include <softopt/io/csv_writer.h>
 #include <softopt/io/pvd_series.h>
+#include <softopt/io/stl_writer.h>
 #include <softopt/io/tracked_points.h>
 #include <softopt/physics/hyperelastic_problem.h>
 #include <softopt/shape/design_configuration.h>
@@ -18,6 +19,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <sstream>
 #include <tuple>
 
 
@@ -44,7 +46,7 @@ namespace softopt
 
 
     /** A functional's extreme values along a load path, and its value at
-     * its target (if it reads one state). */
+     * its target (at the last of its targets if it reads several states). */
     struct Extrema
     {
       double minimum = std::numeric_limits<double>::infinity();
@@ -153,7 +155,8 @@ namespace softopt
                                      "design_mean_ux_mm",
                                      "design_mean_inward_radial_mm"};
     // Each objective and constraint along the whole path (its value as if
-    // its target were the current load factor).
+    // its target were the current load factor; one of several states only
+    // at the last of them).
     for (const auto *f : functionals)
       columns.push_back(f->name());
     for (const auto *c : {"newton_iterations",
@@ -243,6 +246,12 @@ namespace softopt
       const SelfIntersection   contact = design_self_intersections(design, &deformed);
       row.push_back(contact.pairs > 0 ? "1" : "0");
       load_path.add_row(row);
+      if (settings.output.deformed_stl && point.at_target && point.load_factor > 0)
+        {
+          std::ostringstream name;
+          name << directory << "/deformed_" << p_kPa << "kPa.stl";
+          write_design_stl(design, name.str(), &deformed);
+        }
       if (tracked)
         {
           std::vector<std::string> tracked_row{std::to_string(point.step),

@@ -18,6 +18,14 @@ namespace softopt
                       "as VTU files (listed in solution.pvd, for ParaView); "
                       "\"none\" also switches off the design snapshots of "
                       "\"optimize\".");
+    prm.declare_entry("Deformed STL",
+                      "false",
+                      Patterns::Bool(),
+                      "Whether the load path (\"analyze\" and the final "
+                      "analysis of \"optimize\") writes the deformed surface "
+                      "at each target load factor as deformed_<p>kPa.stl "
+                      "(binary, mm, next to load_path.csv), for renders of "
+                      "the inflated part (scripts/render_stl).");
     prm.declare_entry(
       "Tracked points",
       "",
@@ -57,6 +65,7 @@ namespace softopt
     vtu_output = vtu == "every step" ? VtuOutput::every_step :
                  vtu == "targets"    ? VtuOutput::targets :
                                        VtuOutput::none;
+    deformed_stl = prm.get_bool("Deformed STL");
     tracked_points =
       parse_named_points(prm.get("Tracked points"),
                          input.where("Output", "Tracked points"));

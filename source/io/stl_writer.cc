@@ -53,14 +53,17 @@ namespace softopt
 
 
   unsigned int
-  write_design_stl(const DesignConfiguration &design, const std::string &file)
+  write_design_stl(const DesignConfiguration &design,
+                   const std::string         &file,
+                   const Deformation         *deformation)
   {
     const auto comm = design.get_dof_handler().get_communicator();
 
-    const std::vector<double> corners     = gathered_boundary_triangles(design);
-    unsigned int              n_triangles = corners.size() / 9;
+    const std::vector<double> corners =
+      gathered_boundary_triangles(design, nullptr, deformation);
+    unsigned int n_triangles = corners.size() / 9;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      write_stl(corners, file, "softopt design, mm");
+      write_stl(corners, file, deformation ? "softopt deformed design, mm" : "softopt design, mm");
     return Utilities::MPI::broadcast(comm, n_triangles, 0);
   }
 } // namespace softopt

@@ -106,9 +106,10 @@ namespace softopt
       prm.get_double("Arclength maximum turning angle") * M_PI / 180.;
     maximum_state_change = prm.get_double("Arclength maximum state change");
 
-    AssertThrow(minimum_increment <= initial_increment,
+    AssertThrow(minimum_increment <= std::min(initial_increment, maximum_increment),
                 ExcMessage(input.where("Loading", "Minimum load increment") +
-                           ": must not exceed the initial load increment."));
+                           ": must not exceed the initial or the maximum load "
+                           "increment."));
   }
 
 

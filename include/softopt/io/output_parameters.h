@@ -33,6 +33,10 @@ namespace softopt
     /** The surface points whose displacement history goes to
      * tracked_points.csv (none: no file). */
     std::vector<NamedPoint> tracked_points;
+
+    /** Whether a load path writes its deformed surface at each target as
+     * deformed_<p>kPa.stl. */
+    bool deformed_stl = false;
   };
 } // namespace softopt
 

@@ -1,6 +1,7 @@
 #ifndef softopt_io_stl_writer_h
 #define softopt_io_stl_writer_h
 
+#include <softopt/shape/boundary_faces.h>
 #include <softopt/shape/design_configuration.h>
 
 #include <string>
@@ -17,10 +18,12 @@ namespace softopt
    * is watertight (every edge in exactly two triangles, in opposite
    * directions). Collective; rank 0 writes @p file (through a temporary
    * file, so a good STL is never left half-written). Returns the number of
-   * triangles.
+   * triangles. With @p deformation, the deformed surface X + u.
    */
   unsigned int
-  write_design_stl(const DesignConfiguration &design, const std::string &file);
+  write_design_stl(const DesignConfiguration &design,
+                   const std::string         &file,
+                   const Deformation         *deformation = nullptr);
 
   /** Writes the triangles @p corners (9 numbers each, outward) as a binary
    * STL in mm with the 80-character header @p title, through a temporary

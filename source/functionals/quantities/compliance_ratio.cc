@@ -2,6 +2,7 @@
 // constraint that keeps a pressure maximum (a snap-through) away from the
 // target pressure without locating it.
 
+#include <softopt/base/step_failure.h>
 #include <softopt/functionals/design_surface.h>
 #include <softopt/functionals/quantity.h>
 
@@ -64,26 +65,26 @@ namespace softopt
         const double l_0 = load_factors()[0], l = load_factors()[1];
         const double c   = l / (l - l_0);
         const Vector rest = problem.create_vector();
-        if (derivatives == nullptr)
-          {
-            const double V_r = cavity_volume(problem, design, rest);
-            const double V_0 = cavity_volume(problem, design, *states[0]);
-            const double V_1 = cavity_volume(problem, design, *states[1]);
-            return c * (V_1 - V_0) / (V_1 - V_r);
-          }
         // Q = c A / B with A = V_1 - V_0, B = V_1 - V_r: the chain rule
         // through the three volumes, each a function of x = X + u.
-        derivatives->d_da.resize(2);
-        Vector       dVr_dX, dV0_dX, dV1_dX, unused;
-        const double V_r = cavity_volume(problem, design, rest, &unused, &dVr_dX);
-        const double V_0 =
-          cavity_volume(problem, design, *states[0], &derivatives->d_da[0], &dV0_dX);
-        const double V_1 =
-          cavity_volume(problem, design, *states[1], &derivatives->d_da[1], &dV1_dX);
+        Vector dVr_dX, dV0_dX, dV1_dX;
+        if (derivatives != nullptr)
+          derivatives->d_da.resize(2);
+        const auto d_da = [&](const unsigned int i) {
+          return derivatives ? &derivatives->d_da[i] : nullptr;
+        };
+        const auto d_dX = [&](Vector &v) { return derivatives ? &v : nullptr; };
+        const double V_r = cavity_volume(problem, design, rest, nullptr, d_dX(dVr_dX));
+        const double V_0 = cavity_volume(problem, design, *states[0], d_da(0), d_dX(dV0_dX));
+        const double V_1 = cavity_volume(problem, design, *states[1], d_da(1), d_dX(dV1_dX));
         const double A = V_1 - V_0, B = V_1 - V_r;
-        AssertThrow(B > 0,
-                    ExcMessage("compliance ratio: the cavity did not grow "
-                               "under pressure."));
+        // A design whose cavity shrinks under pressure has no such ratio:
+        // refused like an inverted one.
+        if (!(B > 0))
+          throw StepFailure("compliance ratio: the cavity did not grow under "
+                            "pressure (dV = " + std::to_string(B) + " mm^3).");
+        if (derivatives == nullptr)
+          return c * A / B;
         const double dQ_dV0 = -c / B;
         const double dQ_dV1 = c * (V_0 - V_r) / (B * B);
         const double dQ_dVr = c * A / (B * B);
