@@ -6,7 +6,8 @@
 # symmetry planes; every one lies on the P2 surface) must equal that of load_path.csv's
 # cavity volume, (6 V / pi)^(1/3) for the octant, within the 0.5 mm mesh's
 # chord error (bound 0.1 %), and every edge must be shared by exactly two
-# triangles (watertight).
+# triangles (watertight). The final analysis of "optimize" writes them at
+# the same four targets, not at its equal load steps.
 # Usage: deformed_stl.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
@@ -53,3 +54,15 @@ for name in files:
           f"triangles: {open_edges} (= 0) {'ok' if ok else 'FAIL'}")
 sys.exit(1 if failures else 0)
 PY
+failures=$?
+# The final analysis of "optimize" writes them at the same four targets,
+# not at its equal steps.
+sed -e 's/set Command = analyze/set Command = optimize/' \
+    -e 's/^set Output directory = results/set Output directory = run/' case.prm > run.prm
+printf 'subsection Optimization\n  set Maximum iterations = 1\n  set Final analysis steps = 5\nend\n' >> run.prm
+"$softopt" optimize run.prm > optimize.log 2>&1 || { echo "FAIL optimize"; cat optimize.log; exit 1; }
+n=$(ls run/final_analysis/deformed_*kPa.stl | wc -l)
+steps=$(($(wc -l < run/final_analysis/load_path.csv) - 1))
+[ "$n" = 4 ] && echo "final analysis: $n deformed STL files at $steps load steps (4 targets) ok" ||
+  { echo "final analysis: $n deformed STL files at $steps load steps (4 targets) FAIL"; failures=1; }
+exit $failures

@@ -14,6 +14,7 @@
 #include <softopt/physics/hyperelastic_problem.h>
 #include <softopt/shape/design_configuration.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -193,6 +194,11 @@ namespace softopt
     unsigned int         vtu_counter = 0;
     bool                 in_contact  = false;
     std::map<double, HyperelasticProblem::Vector> target_states;
+    // The case's own targets (not the final analysis' equal steps), where
+    // "Deformed STL" writes the deformed surface.
+    std::vector<double> design_targets = settings.loading.target_load_factors;
+    for (const auto *f : functionals)
+      design_targets.insert(design_targets.end(), f->load_factors().begin(), f->load_factors().end());
     const auto   record      = [&](const PathFollowing::PathPoint  &point,
                             const HyperelasticProblem::Vector &state) {
       if (point.at_target)
@@ -246,7 +252,8 @@ namespace softopt
       const SelfIntersection   contact = design_self_intersections(design, &deformed);
       row.push_back(contact.pairs > 0 ? "1" : "0");
       load_path.add_row(row);
-      if (settings.output.deformed_stl && point.at_target && point.load_factor > 0)
+      if (settings.output.deformed_stl && point.at_target &&
+          std::count(design_targets.begin(), design_targets.end(), point.load_factor) > 0)
         {
           std::ostringstream name;
           name << directory << "/deformed_" << p_kPa << "kPa.stl";

@@ -23,7 +23,9 @@ namespace softopt
                       Patterns::Bool(),
                       "Whether the load path (\"analyze\" and the final "
                       "analysis of \"optimize\") writes the deformed surface "
-                      "at each target load factor as deformed_<p>kPa.stl "
+                      "at each target load factor (Target load factors and "
+                      "those of the objectives and constraints, not the "
+                      "final analysis' equal steps) as deformed_<p>kPa.stl "
                       "(binary, mm, next to load_path.csv), for renders of "
                       "the inflated part (scripts/render_stl).");
     prm.declare_entry(
