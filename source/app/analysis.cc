@@ -11,6 +11,7 @@
 #include <softopt/io/pvd_series.h>
 #include <softopt/io/stl_writer.h>
 #include <softopt/io/tracked_points.h>
+#include <softopt/optimization/design_problem.h>
 #include <softopt/physics/hyperelastic_problem.h>
 #include <softopt/shape/design_configuration.h>
 
@@ -194,14 +195,17 @@ namespace softopt
     unsigned int         vtu_counter = 0;
     bool                 in_contact  = false;
     std::map<double, HyperelasticProblem::Vector> target_states;
-    // The case's own targets (not the final analysis' equal steps), where
-    // "Deformed STL" writes the deformed surface.
-    std::vector<double> design_targets = settings.loading.target_load_factors;
-    for (const auto *f : functionals)
-      design_targets.insert(design_targets.end(), f->load_factors().begin(), f->load_factors().end());
+    // The case's own targets (not the final analysis' equal steps): their
+    // states for the functionals of several states, and where "Deformed
+    // STL" writes the deformed surface.
+    const std::vector<double> design_targets = case_targets(settings);
     const auto   record      = [&](const PathFollowing::PathPoint  &point,
                             const HyperelasticProblem::Vector &state) {
-      if (point.at_target)
+      const bool at_design_target =
+        point.at_target && std::binary_search(design_targets.begin(),
+                                              design_targets.end(),
+                                              point.load_factor);
+      if (at_design_target)
         target_states[point.load_factor] = state;
       const double volume           = cavity_volume(problem, design, state);
       const auto [mean_ux, mean_in] = design_means(problem, design, state);
@@ -252,8 +256,7 @@ namespace softopt
       const SelfIntersection   contact = design_self_intersections(design, &deformed);
       row.push_back(contact.pairs > 0 ? "1" : "0");
       load_path.add_row(row);
-      if (settings.output.deformed_stl && point.at_target &&
-          std::count(design_targets.begin(), design_targets.end(), point.load_factor) > 0)
+      if (settings.output.deformed_stl && at_design_target)
         {
           std::ostringstream name;
           name << directory << "/deformed_" << p_kPa << "kPa.stl";
@@ -362,13 +365,8 @@ namespace softopt
     const OutputDirectory out(settings.output_directory, comm);
     out.write_parameters(settings.prm);
     std::vector<const Functional *> functionals;
-    std::vector<double>             targets = settings.loading.target_load_factors;
     for (const auto &f : settings.functionals)
-      {
-        functionals.push_back(f.get());
-        // The path lands on every functional's load factors too.
-        targets.insert(targets.end(), f->load_factors().begin(), f->load_factors().end());
-      }
+      functionals.push_back(f.get());
 
     Timer path_timer;
     const PathFollowing::Result result =
@@ -376,7 +374,7 @@ namespace softopt
                        design,
                        settings,
                        functionals,
-                       targets,
+                       case_targets(settings),
                        out.path(),
                        pcout);
     path_timer.stop();

@@ -68,11 +68,7 @@ namespace softopt
     build(mesh_file);
     for (const auto &f : parameters.functionals)
       functionals_.push_back(f.get());
-    targets = parameters.loading.target_load_factors;
-    for (const auto *f : functionals_)
-      targets.insert(targets.end(), f->load_factors().begin(), f->load_factors().end());
-    std::sort(targets.begin(), targets.end());
-    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+    targets = case_targets(parameters);
   }
 
 
@@ -256,11 +252,22 @@ namespace softopt
 
 
   std::vector<double>
+  case_targets(const ProblemParameters &parameters)
+  {
+    std::vector<double> targets = parameters.loading.target_load_factors;
+    for (const auto &f : parameters.functionals)
+      targets.insert(targets.end(), f->load_factors().begin(), f->load_factors().end());
+    std::sort(targets.begin(), targets.end());
+    targets.erase(std::unique(targets.begin(), targets.end()), targets.end());
+    return targets;
+  }
+
+
+
+  std::vector<double>
   final_analysis_path(const ProblemParameters &parameters)
   {
-    std::vector<double> path = parameters.loading.target_load_factors;
-    for (const auto &f : parameters.functionals)
-      path.insert(path.end(), f->load_factors().begin(), f->load_factors().end());
+    std::vector<double> path = case_targets(parameters);
     const unsigned int n = parameters.optimization.final_analysis_steps;
     for (unsigned int i = 1; i <= n; ++i)
       path.push_back(double(i) / n);

@@ -259,6 +259,11 @@ namespace softopt
     double tangent_at = -1;
   };
 
+  /** The case's target load factors: "Target load factors" and those of
+   * every objective and constraint, sorted, each once. */
+  std::vector<double>
+  case_targets(const ProblemParameters &parameters);
+
   /** The load factors of the final analysis of a design of @p parameters:
    * every target of the loading and the functionals, and "Final analysis
    * steps" equal steps in (0, 1]. */
