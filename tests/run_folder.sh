@@ -10,7 +10,8 @@
 #   5. a second run into a folder while a first one writes there stops at
 #      once, naming the first run's process;
 #   6. --start-over removes the earlier run and starts at iteration 0;
-#   7. after a restart, design.pvd lists the snapshots from before it too;
+#   7. after a restart, design.pvd lists the snapshots from before it too,
+#      and snapshots/ holds one surface per iteration, the last design.stl;
 #   8. a restart from a truncated checkpoint says so;
 #   9. a restart whose checkpoint names a new mesh that was deleted names
 #      that mesh;
@@ -117,6 +118,24 @@ if [ "$listed" != 'file="design_0000.pvtu" file="design_0001.pvtu" file="design_
   failures=$((failures + 1))
 else
   echo "ok   design.pvd after the restart lists iterations 0, 1 and 2"
+fi
+#    The surface snapshots: one per iteration (those of the runs before the
+#    --start-over removed), the last the final design.stl.
+listed=$(cd run/snapshots && ls | tr '\n' ' ')
+if [ "$listed" != "design_0000.stl design_0001.stl design_0002.stl " ]; then
+  echo "FAIL snapshots/ holds $listed(expected design_0000.stl to design_0002.stl)"
+  failures=$((failures + 1))
+elif ! cmp -s run/snapshots/design_0002.stl run/design.stl; then
+  echo "FAIL snapshots/design_0002.stl differs from design.stl (the same design)"
+  failures=$((failures + 1))
+else
+  echo "ok   snapshots/ holds design_0000.stl to design_0002.stl, the last equal to design.stl"
+fi
+rendered=$(/usr/bin/python3 "$source/scripts/render_snapshots" run snapshots.png --panels 2 2>&1)
+if [ "$rendered" != "Wrote snapshots.png (2 snapshots)" ] || [ ! -s snapshots.png ]; then
+  echo "FAIL render_snapshots --panels 2: $rendered"; failures=$((failures + 1))
+else
+  echo "ok   render_snapshots --panels 2 draws the first and the last"
 fi
 # 8. A truncated checkpoint.
 case_file 100 2 > case.prm

@@ -97,7 +97,7 @@ namespace softopt
                     "over with \"softopt optimize " + file + " --start-over\" "
                     "(which first removes its checkpoint, history.csv, "
                     "stop_reason.txt, design.stl, design.msh, design.prm, final_analysis/, "
-                    "the verification and the castability checks), or set another "
+                    "the verification, the castability checks and snapshots/), or set another "
                     "\"Output directory\".";
           else if (start == Start::start_over)
             {
@@ -105,7 +105,7 @@ namespace softopt
                                        "stop_reason.txt", "final_analysis", "design.stl",
                                        "design.msh", "design.prm", "verification",
                                        "verification.csv", "castability.csv",
-                                       "wall_thickness.vtu"})
+                                       "wall_thickness.vtu", "snapshots"})
                 if (fs::remove_all(out.file(name), code) == std::uintmax_t(-1))
                   error = "Cannot remove " + out.file(name) + ": " + code.message();
             }

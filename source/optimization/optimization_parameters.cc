@@ -91,7 +91,9 @@ namespace softopt
                       "10",
                       Patterns::Integer(0),
                       "Every this many iterations the design and its deformed "
-                      "states are written as VTU (0: only the final design).");
+                      "states are written as VTU, and the design's surface as "
+                      "snapshots/design_<iteration>.stl (scripts/render_snapshots "
+                      "draws them in a row; 0: only the final design).");
     prm.declare_entry("Checkpoint interval",
                       "10",
                       Patterns::Integer(0),

@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 
 #include <softopt/base/on_rank_zero.h>
+#include <softopt/io/stl_writer.h>
 #include <softopt/optimization/checkpoint.h>
 #include <softopt/optimization/shape_optimizer.h>
 
@@ -451,6 +452,14 @@ namespace softopt
   void
   ShapeOptimizer::write_snapshot(const unsigned int iteration, const DesignIterate &x)
   {
+    // The design's surface, small enough to keep every snapshot of a long
+    // run (the paper's panel a: scripts/render_snapshots).
+    std::ostringstream stl;
+    stl << "snapshots/design_" << std::setw(4) << std::setfill('0') << iteration << ".stl";
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      std::filesystem::create_directories(out.file("snapshots"));
+    write_design_stl(problem.design_configuration(), out.file(stl.str()));
+
     if (output.vtu_output == OutputParameters::VtuOutput::none)
       return;
     const auto &physics = problem.hyperelastic_problem();

@@ -113,7 +113,8 @@ namespace softopt
            const double                                     change,
            const double                                     wall_time);
 
-    /** The design of @p x undeformed and deformed at each target (VTU/PVD). */
+    /** The design of @p x undeformed and deformed at each target (VTU/PVD),
+     * and its surface as snapshots/design_<iteration>.stl. */
     void
     write_snapshot(const unsigned int iteration, const DesignIterate &x);
 
