@@ -13,6 +13,7 @@
 #include <softopt/io/tracked_points.h>
 #include <softopt/optimization/design_problem.h>
 #include <softopt/physics/hyperelastic_problem.h>
+#include <softopt/physics/stability.h>
 #include <softopt/shape/design_configuration.h>
 
 #include <algorithm>
@@ -161,6 +162,12 @@ namespace softopt
     // at the last of them).
     for (const auto *f : functionals)
       columns.push_back(f->name());
+    // The lowest eigenvalue of the tangent relative to that at rest (the
+    // design's own, at zero load).
+    const double rest_eigenvalue =
+      settings.output.stability ? lowest_eigenvalue(problem, a, 0.).value : 0.;
+    if (settings.output.stability)
+      columns.emplace_back("stability");
     for (const auto *c : {"newton_iterations",
                           "residual_norm_N",
                           "at_target",
@@ -245,6 +252,13 @@ namespace softopt
                               f.load_factors()[0] == point.load_factor))
             extrema[i].at_target = value;
         }
+      double stability = std::nan("");
+      if (settings.output.stability)
+        {
+          stability = lowest_eigenvalue(problem, state, point.load_factor).value /
+                      rest_eigenvalue;
+          row.push_back(CsvWriter::format(stability));
+        }
       row.push_back(std::to_string(point.newton_iterations));
       row.push_back(CsvWriter::format(point.residual_norm));
       row.push_back(point.at_target ? "1" : "0");
@@ -280,8 +294,10 @@ namespace softopt
             << std::setprecision(10) << point.load_factor << "  p " << p_kPa
             << " kPa  V " << volume << " mm^3  dV " << volume - initial_volume
             << " mm^3  mean u_x " << mean_ux << " mm  mean u_in " << mean_in
-            << " mm  Newton " << point.newton_iterations
-            << (point.limit_point ? "  (limit point)" : "") << std::endl;
+            << " mm  Newton " << point.newton_iterations;
+      if (settings.output.stability)
+        pcout << "  stability " << stability;
+      pcout << (point.limit_point ? "  (limit point)" : "") << std::endl;
       if (contact.pairs > 0 && !in_contact)
         pcout << "  warning: at " << p_kPa << " kPa the deformed surface passes "
               << "through itself (" << contact.pairs << " pairs of triangles, one near ("

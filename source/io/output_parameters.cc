@@ -17,7 +17,7 @@ namespace softopt
                       "Which converged states of the load path are written "
                       "as VTU files (listed in solution.pvd, for ParaView); "
                       "\"none\" also switches off the design snapshots of "
-                      "\"optimize\".");
+                      "\"optimize\" (VTU and STL).");
     prm.declare_entry("Deformed STL",
                       "false",
                       Patterns::Bool(),
@@ -28,6 +28,17 @@ namespace softopt
                       "final analysis' equal steps) as deformed_<p>kPa.stl "
                       "(binary, mm, next to load_path.csv), for renders of "
                       "the inflated part (scripts/render_stl).");
+    prm.declare_entry("Stability",
+                      "false",
+                      Patterns::Bool(),
+                      "Whether the load path (\"analyze\" and the final "
+                      "analysis of \"optimize\") writes, at every converged "
+                      "step, the eigenvalue of the condensed tangent nearest "
+                      "zero relative to its value at rest, as load_path.csv's "
+                      "column \"stability\": 1 at rest, 0 at a limit point "
+                      "(where the part snaps under pressure control, whatever "
+                      "the mode), negative on a descending branch. Costs a "
+                      "factorization and a few dozen solves per step.");
     prm.declare_entry(
       "Tracked points",
       "",
@@ -68,6 +79,7 @@ namespace softopt
                  vtu == "targets"    ? VtuOutput::targets :
                                        VtuOutput::none;
     deformed_stl = prm.get_bool("Deformed STL");
+    stability    = prm.get_bool("Stability");
     tracked_points =
       parse_named_points(prm.get("Tracked points"),
                          input.where("Output", "Tracked points"));

@@ -93,7 +93,8 @@ namespace softopt
                       "Every this many iterations the design and its deformed "
                       "states are written as VTU, and the design's surface as "
                       "snapshots/design_<iteration>.stl (scripts/render_snapshots "
-                      "draws them in a row; 0: only the final design).");
+                      "draws them in a row; 0: only the final design; none with "
+                      "Output / VTU output = none).");
     prm.declare_entry("Checkpoint interval",
                       "10",
                       Patterns::Integer(0),

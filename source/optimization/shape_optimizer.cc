@@ -452,6 +452,8 @@ namespace softopt
   void
   ShapeOptimizer::write_snapshot(const unsigned int iteration, const DesignIterate &x)
   {
+    if (output.vtu_output == OutputParameters::VtuOutput::none)
+      return;
     // The design's surface, small enough to keep every snapshot of a long
     // run (the paper's panel a: scripts/render_snapshots).
     std::ostringstream stl;
@@ -460,8 +462,6 @@ namespace softopt
       std::filesystem::create_directories(out.file("snapshots"));
     write_design_stl(problem.design_configuration(), out.file(stl.str()));
 
-    if (output.vtu_output == OutputParameters::VtuOutput::none)
-      return;
     const auto &physics = problem.hyperelastic_problem();
     const auto  add     = [&](const std::string &name, const Vector &a) {
       auto &series = snapshots[name];

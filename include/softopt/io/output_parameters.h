@@ -37,6 +37,10 @@ namespace softopt
     /** Whether a load path writes its deformed surface at each target as
      * deformed_<p>kPa.stl. */
     bool deformed_stl = false;
+
+    /** Whether a load path writes each state's lowest eigenvalue of the
+     * tangent, relative to that at rest (load_path.csv's "stability"). */
+    bool stability = false;
   };
 } // namespace softopt
 

@@ -1,0 +1,108 @@
+// The eigenvalue of the tangent nearest zero (lowest_eigenvalue) vanishes
+// at the limit point of the load path. Sphere octants with A/B = 0.9 and
+// 0.5, nu = 0.4999, inflated by arclength past their pressure maximum
+// (closed form, sphere.h: p_max = 0.1304272 mu and 0.8164237 mu). Near a
+// maximum the eigenvalue goes like +-sqrt(p_max - p) on either side, so
+// lambda^2 is linear in p: extrapolated to zero from the two rows of largest
+// load factor (one on each side of the maximum) it must land on the
+// closed-form p_max within 0.2% (the mesh's own error, tests/limit_points)
+// and on the maximum the path located within 0.05%. The eigenvalue must be
+// positive on every row before the located maximum and negative on every
+// row after it (unstable under pressure), and converged (residual
+// ||K phi - lambda phi|| / |lambda| below 1e-4).
+
+#include <softopt/physics/stability.h>
+
+#include "sphere.h"
+
+using namespace softopt_tests;
+
+void
+follow(const double A, const double B, const double h, const double p_over_mu,
+       const double volume_limit)
+{
+  Sphere       sphere(A, B, h, 3., 0.4999, p_over_mu);
+  const double ratio = A / B;
+  double       lo = 1.01, hi = 3.; // golden-section search on p(lambda_a)
+  for (unsigned int i = 0; i < 200; ++i)
+    {
+      const double m1 = lo + 0.382 * (hi - lo), m2 = lo + 0.618 * (hi - lo);
+      if (closed_form_pressure(m1, ratio) < closed_form_pressure(m2, ratio))
+        lo = m1;
+      else
+        hi = m2;
+    }
+  const double exact_max = closed_form_pressure((lo + hi) / 2, ratio);
+
+  softopt::PathFollowing::Parameters path_parameters;
+  path_parameters.method = softopt::PathFollowing::Method::arclength;
+  softopt::NewtonSolver newton;
+  ConditionalOStream    quiet(std::cout, false);
+  const double          rest =
+    softopt::lowest_eigenvalue(*sphere.problem, sphere.problem->create_vector(), 0.).value;
+
+  // (load factor, eigenvalue) of the rows, in path order.
+  std::vector<std::pair<double, double>> rows;
+  double       initial_volume = -1, worst_residual = 0;
+  bool         past_maximum = false;
+  unsigned int wrong_signs  = 0;
+  const softopt::PathFollowing path(path_parameters);
+  const auto   result = path.run(
+    *sphere.problem, newton, {1.},
+    [&](const softopt::PathFollowing::PathPoint &point, const auto &a) {
+      const double volume = softopt::cavity_volume(*sphere.problem, *sphere.design, a);
+      if (initial_volume < 0)
+        initial_volume = volume;
+      // Rows after the located maximum are on the descending branch.
+      past_maximum = past_maximum || point.limit_point;
+      if (point.step > 0 && !point.limit_point)
+        {
+          const auto eigen =
+            softopt::lowest_eigenvalue(*sphere.problem, a, point.load_factor);
+          worst_residual = std::max(worst_residual, eigen.residual);
+          if ((eigen.value > 0) == past_maximum)
+            ++wrong_signs;
+          rows.emplace_back(point.load_factor, eigen.value / rest);
+        }
+      return volume > volume_limit * initial_volume ? std::string("the volume limit") :
+                                                      std::string();
+    },
+    quiet);
+
+  // The two rows of largest load factor.
+  unsigned int top = 0;
+  while (top + 1 < rows.size() && rows[top + 1].first > rows[top].first)
+    ++top;
+  const auto [p1, s1] = rows[top - 1];
+  const auto [p2, s2] = rows[top];
+  const double extrapolated =
+    (p2 + s2 * s2 * (p2 - p1) / (s1 * s1 - s2 * s2)) * p_over_mu;
+  const double located = result.limit_load_factors.empty() ?
+                           0. :
+                           result.limit_load_factors.front() * p_over_mu;
+  const double exact_error   = std::abs(extrapolated - exact_max) / exact_max;
+  const double located_error = std::abs(extrapolated - located) / located;
+  deallog << "A/B = " << ratio << ", closed-form p_max/mu " << exact_max
+          << ", located " << located << std::endl;
+  deallog << "  stability at the two rows of largest load " << s1 << ", " << s2
+          << "; lambda^2 extrapolated to zero at p/mu " << extrapolated << std::endl;
+  deallog << "  error against the closed form " << exact_error
+          << (exact_error < 2e-3 ? " (< 0.2%)" : " (TOO LARGE, >= 0.2%)")
+          << ", against the located maximum " << located_error
+          << (located_error < 5e-4 ? " (< 0.05%)" : " (TOO LARGE, >= 0.05%)") << std::endl;
+  deallog << "  rows with the wrong sign " << wrong_signs << " of " << rows.size()
+          << (wrong_signs == 0 && past_maximum ? " (== 0, descending rows present)" :
+                                                 " (WRONG)")
+          << "; largest eigen residual "
+          << (worst_residual < 1e-4 ? "< 1e-4" : "TOO LARGE, >= 1e-4") << std::endl;
+}
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  TestLog                          log;
+  deallog << std::setprecision(6);
+  follow(0.9, 1., 0.1, 0.15, 6.);
+  follow(1., 2., 0.5, 1., 12.);
+}
