@@ -4,7 +4,8 @@
 #   1. a fresh run into a folder holding an earlier run is refused, and the
 #      earlier history.csv is untouched;
 #   2. --restart with a changed Pressure is refused, naming the entry;
-#   3. --restart that would not run further is refused;
+#   3. --restart that would not run further is refused (also with another
+#      subsection Verification, which may change);
 #   4. --restart with more iterations (and the pressure written another way)
 #      goes on: rows 0..2, one of each;
 #   5. a second run into a folder while a first one writes there stops at
@@ -74,6 +75,11 @@ expect "restart with a changed Pressure" $? 'Loading/Pressure: "100" then, "120"
 # 3. A restart that would not run further.
 "$softopt" optimize case.prm --restart > log 2>&1
 expect "restart without more iterations" $? "would not run further"
+#    Subsection Verification may change (it acts after the loop): the same
+#    refusal, not one of changed entries.
+(case_file 100 2; printf 'subsection Verification\n  set Mesh sizes = 0.4\nend\n') > verify.prm
+"$softopt" optimize verify.prm --restart > log 2>&1
+expect "restart with another Verification, without more iterations" $? "would not run further"
 
 # 4. A restart with one iteration more (Pressure written 100.0: the same
 #    number, so the same problem).

@@ -167,7 +167,11 @@ namespace softopt
     const double rest_eigenvalue =
       settings.output.stability ? lowest_eigenvalue(problem, a, 0.).value : 0.;
     if (settings.output.stability)
-      columns.emplace_back("stability");
+      {
+        columns.emplace_back("stability");
+        pcout << "Lowest eigenvalue of the tangent at rest: " << rest_eigenvalue
+              << " N/mm (the column \"stability\" is relative to it)" << std::endl;
+      }
     for (const auto *c : {"newton_iterations",
                           "residual_norm_N",
                           "at_target",

@@ -116,7 +116,7 @@ namespace softopt
               const auto differences = parameter_differences(
                 out.file("parameters.prm"),
                 settings.prm,
-                {"Command", "Output directory", "Print timings", "Output/*",
+                {"Command", "Output directory", "Print timings", "Output/*", "Verification/*",
                  "Optimization/Maximum iterations", "Optimization/Checkpoint interval",
                  "Optimization/Output interval", "Optimization/Final analysis steps"});
               if (!differences.empty())

@@ -150,6 +150,7 @@ namespace softopt
               P *= -1.;
               problem.solve(P, du_f);
             }
+          next.negative_pivots = int(problem.n_negative_pivots());
           // The tangent (du_f, 1) of the last iterate, oriented along the
           // step (Newton's last update is far below the step).
           const double orientation = (du_f * Du + psi_squared * Dl) >= 0 ? 1. : -1.;

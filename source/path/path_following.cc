@@ -145,8 +145,31 @@ namespace softopt
     bool                       has_previous = false;
     std::unique_ptr<Arclength> arclength;
     if (parameters.method == Method::arclength)
-      arclength = std::make_unique<Arclength>(
-        problem, newton, current.a, 0., parameters.load_factor_weight);
+      {
+        arclength = std::make_unique<Arclength>(
+          problem, newton, current.a, 0., parameters.load_factor_weight);
+        current.negative_pivots = int(problem.n_negative_pivots());
+      }
+    // A limit point between two converged points: the load rate changes
+    // sign, and so does one eigenvalue of the tangent (its inertia changes).
+    // Where the path bends sharply, as where a bulge forms within a small
+    // range of the load, the tangent at the new point can point backwards
+    // along the chord with the tangent stiffness still positive definite:
+    // that is no limit point (doc/theory.md, "Limit points and the
+    // tangent's inertia").
+    const auto limit_point_between = [&](const Point &from, const Point &to) {
+      if ((from.load_rate > 0) == (to.load_rate > 0))
+        return false;
+      if (from.negative_pivots < 0 || to.negative_pivots < 0 ||
+          from.negative_pivots != to.negative_pivots)
+        return true;
+      log << "    the load rate changed sign between load factors "
+          << from.load_factor << " and " << to.load_factor
+          << " without a change of the tangent's inertia (" << to.negative_pivots
+          << " negative pivots): a sharp bend of the path, no limit point"
+          << std::endl;
+      return false;
+    };
     // The step size: a load increment, or its arclength.
     const auto size_of = [&](const double load_increment) {
       return arclength ? arclength->arclength_of(load_increment) : load_increment;
@@ -300,8 +323,8 @@ namespace softopt
 
         // A maximum of the load before the last target: a part inflated
         // from rest snaps through there, to a state far from this path.
-        if (parameters.stop_at_limit_point && arclength && current.load_rate > 0 &&
-            next.load_rate <= 0)
+        const bool limit_point = arclength && limit_point_between(current, next);
+        if (parameters.stop_at_limit_point && limit_point && current.load_rate > 0)
           {
             std::ostringstream reason;
             reason << "the pressure has a maximum (a limit point) between load "
@@ -321,7 +344,7 @@ namespace softopt
 
         // The load rate changed sign between the two points: a limit point
         // lies between them, located and reported before the next point.
-        if (arclength && (current.load_rate > 0) != (next.load_rate > 0))
+        if (limit_point)
           {
             // (Not reported if not one point between them converged.)
             if (const auto limit = locate_limit_point(*arclength, current, next, log))

@@ -69,6 +69,10 @@ namespace softopt
       double turning_angle = 0;
       /** |Delta u| / |u_f^0| of the step. */
       double state_change = 0;
+      /** Negative pivots of the tangent's factorization at the point (at
+       * Newton's last iterate; -1: not known). A limit point, where one
+       * eigenvalue of the tangent passes zero, changes it by one. */
+      int negative_pivots = -1;
     };
 
     /**
