@@ -23,15 +23,7 @@ follow(const double A,
   Sphere sphere(A, B, h, 3., 0.4999, p_over_mu);
   const double ratio = A / B;
 
-  // The closed-form maximum: golden-section search on p(lambda_a).
-  double lo = 1.01, hi = 3.;
-  for (unsigned int i = 0; i < 200; ++i)
-    {
-      const double m1 = lo + 0.382 * (hi - lo), m2 = lo + 0.618 * (hi - lo);
-      (closed_form_pressure(m1, ratio) < closed_form_pressure(m2, ratio) ? lo : hi) =
-        (closed_form_pressure(m1, ratio) < closed_form_pressure(m2, ratio) ? m1 : m2);
-    }
-  const double exact_max = closed_form_pressure((lo + hi) / 2, ratio);
+  const double exact_max = closed_form_maximum_pressure(ratio);
 
   softopt::PathFollowing::Parameters path_parameters;
   path_parameters.method = softopt::PathFollowing::Method::arclength;

@@ -82,6 +82,23 @@ namespace softopt_tests
     });
   }
 
+  /** The neo-Hookean sphere's pressure maximum p_max/mu (golden-section
+   * search on p(lambda_a)). */
+  inline double
+  closed_form_maximum_pressure(const double ratio)
+  {
+    double lo = 1.01, hi = 3.;
+    for (unsigned int i = 0; i < 200; ++i)
+      {
+        const double m1 = lo + 0.382 * (hi - lo), m2 = lo + 0.618 * (hi - lo);
+        if (closed_form_pressure(m1, ratio) < closed_form_pressure(m2, ratio))
+          lo = m1;
+        else
+          hi = m2;
+      }
+    return closed_form_pressure((lo + hi) / 2, ratio);
+  }
+
   /** The sphere octant with inner radius A and outer radius B, meshed at h,
    * pressurized with p_over_mu times its shear modulus at load factor 1. */
   struct Sphere
