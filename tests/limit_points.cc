@@ -25,23 +25,10 @@ follow(const double A,
 
   const double exact_max = closed_form_maximum_pressure(ratio);
 
-  softopt::PathFollowing::Parameters path_parameters;
-  path_parameters.method = softopt::PathFollowing::Method::arclength;
-  softopt::NewtonSolver newton;
-  ConditionalOStream    quiet(std::cout, false);
-
   double       max_load = 0, max_stretch = 0, last_load = 0, last_volume = 0;
-  double       initial_volume = -1;
   unsigned int descending = 0, limit_rows = 0;
-  const softopt::PathFollowing path(path_parameters);
-  const auto   result     = path.run(
-    *sphere.problem, newton, {1.},
-    [&](const softopt::PathFollowing::PathPoint &point, const auto &a) {
-      const double volume = softopt::cavity_volume(*sphere.problem, *sphere.design, a);
-      if (initial_volume < 0)
-        initial_volume = softopt::cavity_volume(*sphere.problem,
-                                                *sphere.design,
-                                                sphere.problem->create_vector());
+  const auto   result = follow_past_maximum(
+    sphere, volume_limit, [&](const auto &point, const auto &a, const double volume) {
       if (point.limit_point)
         ++limit_rows;
       else if (point.load_factor > max_load)
@@ -53,10 +40,7 @@ follow(const double A,
         ++descending;
       last_load   = point.load_factor;
       last_volume = volume;
-      return volume > volume_limit * initial_volume ? std::string("the volume limit") :
-                                                      std::string();
-    },
-    quiet);
+    });
 
   const double p_max   = max_load * p_over_mu;
   const double located = result.limit_load_factors.empty() ?

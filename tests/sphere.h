@@ -155,6 +155,36 @@ namespace softopt_tests
     std::unique_ptr<softopt::HyperelasticProblem> problem;
     double                                        initial_volume;
   };
+
+  /** Follows @p sphere's load path by arclength with the default Loading
+   * entries, past its pressure maximum, until the cavity exceeds
+   * @p volume_limit times its initial volume; @p observe(point, a, volume)
+   * sees every converged point. */
+  inline softopt::PathFollowing::Result
+  follow_past_maximum(
+    Sphere      &sphere,
+    const double volume_limit,
+    const std::function<void(const softopt::PathFollowing::PathPoint &,
+                             const softopt::HyperelasticProblem::Vector &,
+                             double)> &observe)
+  {
+    softopt::PathFollowing::Parameters parameters;
+    parameters.method = softopt::PathFollowing::Method::arclength;
+    const softopt::NewtonSolver newton;
+    ConditionalOStream          quiet(std::cout, false);
+    return softopt::PathFollowing(parameters).run(
+      *sphere.problem,
+      newton,
+      {1.},
+      [&](const softopt::PathFollowing::PathPoint &point, const auto &a) {
+        const double volume = softopt::cavity_volume(*sphere.problem, *sphere.design, a);
+        observe(point, a, volume);
+        return volume > volume_limit * sphere.initial_volume ?
+                 std::string("the volume limit") :
+                 std::string();
+      },
+      quiet);
+  }
 } // namespace softopt_tests
 
 #endif

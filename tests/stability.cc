@@ -25,25 +25,16 @@ follow(const double A, const double B, const double h, const double p_over_mu,
   const double ratio = A / B;
   const double exact_max = closed_form_maximum_pressure(ratio);
 
-  softopt::PathFollowing::Parameters path_parameters;
-  path_parameters.method = softopt::PathFollowing::Method::arclength;
-  softopt::NewtonSolver newton;
-  ConditionalOStream    quiet(std::cout, false);
-  const double          rest =
+  const double rest =
     softopt::lowest_eigenvalue(*sphere.problem, sphere.problem->create_vector(), 0.).value;
 
   // (load factor, eigenvalue) of the rows, in path order.
   std::vector<std::pair<double, double>> rows;
-  double       initial_volume = -1, worst_residual = 0;
-  bool         past_maximum = false;
-  unsigned int wrong_signs  = 0;
-  const softopt::PathFollowing path(path_parameters);
-  const auto   result = path.run(
-    *sphere.problem, newton, {1.},
-    [&](const softopt::PathFollowing::PathPoint &point, const auto &a) {
-      const double volume = softopt::cavity_volume(*sphere.problem, *sphere.design, a);
-      if (initial_volume < 0)
-        initial_volume = volume;
+  double       worst_residual = 0;
+  bool         past_maximum   = false;
+  unsigned int wrong_signs    = 0;
+  const auto   result = follow_past_maximum(
+    sphere, volume_limit, [&](const auto &point, const auto &a, double) {
       // Rows after the located maximum are on the descending branch.
       past_maximum = past_maximum || point.limit_point;
       if (point.step > 0 && !point.limit_point)
@@ -55,10 +46,7 @@ follow(const double A, const double B, const double h, const double p_over_mu,
             ++wrong_signs;
           rows.emplace_back(point.load_factor, eigen.value / rest);
         }
-      return volume > volume_limit * initial_volume ? std::string("the volume limit") :
-                                                      std::string();
-    },
-    quiet);
+    });
 
   // The two rows of largest load factor.
   unsigned int top = 0;

@@ -20,11 +20,12 @@ namespace softopt
   /**
    * The eigenvalue nearest zero of the condensed tangent K(a) at load
    * factor @p load_factor, on the free displacement DoFs (the Dirichlet and
-   * the condensed pressure DoFs removed), by inverse iteration on K's
-   * factorization with the Rayleigh quotient phi^T K phi. K is symmetric
-   * (the follower pressure on a closed cavity is conservative), so the
-   * quotient converges twice as fast as the vector, also where two
-   * eigenvalues are (nearly) equal, as on an axisymmetric part. At a limit
+   * the condensed pressure DoFs removed), by subspace iteration with four
+   * vectors on K's factorization and Rayleigh-Ritz (K is symmetric: the
+   * follower pressure on a closed cavity is conservative). The eigenvalues
+   * nearest zero come in clusters (equal pairs on an axisymmetric part,
+   * many nearly equal modes on a sphere), where a single vector converges
+   * at the ratio of two nearly equal eigenvalues. At a limit
    * point of the load path the value is zero whatever the mode's shape:
    * scaled by its value at rest it measures how far a state is from a snap
    * (doc/theory.md, "Keeping the snap above the target").
