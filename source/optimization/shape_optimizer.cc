@@ -4,6 +4,7 @@
 #include <softopt/io/stl_writer.h>
 #include <softopt/optimization/checkpoint.h>
 #include <softopt/optimization/shape_optimizer.h>
+#include <softopt/shape/remesh.h>
 
 #include <algorithm>
 #include <cstdlib>
@@ -178,7 +179,10 @@ namespace softopt
         reset_mma(x);
         pcout << "  iteration " << k << ": ";
         if (mesh_size > 0)
-          pcout << "the schedule's mesh size " << mesh_size << " mm";
+          pcout << "the schedule's mesh size " << mesh_size << " mm (boundary edges "
+                << std::setprecision(2)
+                << mean_boundary_edge_length(problem.design_configuration())
+                << std::setprecision(6) << " mm on average)";
         else
           pcout << "worst element quality " << quality << " < "
                 << parameters.remesh_quality;
