@@ -162,15 +162,18 @@ namespace softopt
     // at the last of them).
     for (const auto *f : functionals)
       columns.push_back(f->name());
-    // The lowest eigenvalue of the tangent relative to that at rest (the
-    // design's own, at zero load).
-    const double rest_eigenvalue =
-      settings.output.stability ? lowest_eigenvalue(problem, a, 0.).value : 0.;
+    // The eigenvalue nearest zero of K(a) phi = mu K_0 phi, K_0 the
+    // tangent at rest without the bulk term (StabilityMetric): each mode's
+    // stiffness relative to its shear stiffness at rest.
+    std::unique_ptr<StabilityMetric> metric;
     if (settings.output.stability)
       {
+        metric = std::make_unique<StabilityMetric>(problem, design.get_mapping(), settings.geometry);
         columns.emplace_back("stability");
-        pcout << "Lowest eigenvalue of the tangent at rest: " << rest_eigenvalue
-              << " N/mm (the column \"stability\" is relative to it)" << std::endl;
+        pcout << "Stability at rest (the lowest mu of K phi = mu K_0 phi, K_0 the "
+              << "tangent at rest without the bulk term; at least 1): "
+              << lowest_eigenvalue(problem, a, 0., 1e-6, 100, &metric->matrix()).value
+              << std::endl;
       }
     for (const auto *c : {"newton_iterations",
                           "residual_norm_N",
@@ -259,8 +262,9 @@ namespace softopt
       double stability = std::nan("");
       if (settings.output.stability)
         {
-          stability = lowest_eigenvalue(problem, state, point.load_factor).value /
-                      rest_eigenvalue;
+          stability =
+            lowest_eigenvalue(problem, state, point.load_factor, 1e-6, 100, &metric->matrix())
+              .value;
           row.push_back(CsvWriter::format(stability));
         }
       row.push_back(std::to_string(point.newton_iterations));

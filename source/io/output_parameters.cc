@@ -33,12 +33,14 @@ namespace softopt
                       Patterns::Bool(),
                       "Whether the load path (\"analyze\" and the final "
                       "analysis of \"optimize\") writes, at every converged "
-                      "step, the eigenvalue of the condensed tangent nearest "
-                      "zero relative to its value at rest, as load_path.csv's "
-                      "column \"stability\": 1 at rest, 0 at a limit point "
-                      "(where the part snaps under pressure control, whatever "
-                      "the mode), negative on a descending branch. Costs a "
-                      "factorization and a few dozen solves per step.");
+                      "step, load_path.csv's column \"stability\": the "
+                      "stiffness of the softest mode relative to its shear "
+                      "stiffness at rest (the smallest mu of K phi = mu K_0 "
+                      "phi, K_0 the tangent at rest without the bulk term): "
+                      "at least 1 at rest, 0 at a limit point (where the part "
+                      "snaps under pressure control, whatever the mode), "
+                      "negative on a descending branch. Costs a factorization "
+                      "and a few dozen solves per step, and a second matrix.");
     prm.declare_entry(
       "Tracked points",
       "",

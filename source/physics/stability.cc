@@ -12,12 +12,77 @@
 
 namespace softopt
 {
+  namespace
+  {
+    /** @p base's isochoric part with almost no bulk term: nu = -0.995 is
+     * a bulk modulus of G_0 / 900 (zero would leave the condensed pressure
+     * undefined). */
+    class IsochoricPart : public Material
+    {
+    public:
+      explicit IsochoricPart(const Material &base)
+        : Material(base.shear_modulus, -0.995)
+        , base(base)
+      {}
+
+      double
+      isochoric_energy(const Tensor<2, 3> &F) const override
+      {
+        return base.isochoric_energy(F);
+      }
+
+      Tensor<2, 3>
+      isochoric_stress(const Tensor<2, 3> &F) const override
+      {
+        return base.isochoric_stress(F);
+      }
+
+      Tensor<4, 3>
+      isochoric_tangent(const Tensor<2, 3> &F) const override
+      {
+        return base.isochoric_tangent(F);
+      }
+
+    private:
+      const Material &base;
+    };
+  } // namespace
+
+
+
+  StabilityMetric::StabilityMetric(const HyperelasticProblem &problem,
+                                   const Mapping<3>          &mapping,
+                                   const Geometry            &geometry)
+    : material(std::make_unique<IsochoricPart>(problem.get_material()))
+  {
+    at_rest = std::make_unique<HyperelasticProblem>(
+      problem.get_dof_handler().get_triangulation(), mapping, geometry, *material, 0.);
+    at_rest->setup_system();
+    HyperelasticProblem::Vector r, P;
+    at_rest->assemble(at_rest->create_vector(), 0., r, P, true);
+  }
+
+
+
+  StabilityMetric::~StabilityMetric() = default;
+
+
+
+  const PETScWrappers::MPI::SparseMatrix &
+  StabilityMetric::matrix() const
+  {
+    return at_rest->tangent();
+  }
+
+
+
   LowestEigenvalue
   lowest_eigenvalue(HyperelasticProblem               &problem,
                     const HyperelasticProblem::Vector &a,
                     const double                       load_factor,
                     const double                       tolerance,
-                    const unsigned int                 max_iterations)
+                    const unsigned int                 max_iterations,
+                    const PETScWrappers::MPI::SparseMatrix *metric)
   {
     using Vector = HyperelasticProblem::Vector;
     Vector r, P;
@@ -37,74 +102,98 @@ namespace softopt
       problem.zero_condensed(v);
     };
 
-    // Subspace iteration with a block of m vectors and Rayleigh-Ritz: the
-    // eigenvalues nearest zero come in clusters (equal pairs on an
-    // axisymmetric part, many nearly equal modes on a sphere), where one
-    // vector would converge at the ratio of two nearly equal eigenvalues;
-    // the block converges at the ratio to the (m+1)-th. Starts with every
-    // mode in them, the same on any number of ranks.
-    const unsigned int  m = 4;
-    std::vector<Vector> X(m, problem.create_vector()), Y(m, problem.create_vector());
-    for (unsigned int k = 0; k < m; ++k)
-      {
-        for (const auto i : X[k].locally_owned_elements())
-          X[k](i) = std::sin((0.7548776662 + 0.1 * k) * double(i) + 0.3 * (k + 1));
-        X[k].compress(VectorOperation::insert);
-        free_part(X[k]);
-      }
-    Vector            K_y = problem.create_vector();
-    LowestEigenvalue  result;
-    double            previous = std::numeric_limits<double>::quiet_NaN();
-    LAPACKFullMatrix<double> H(m, m);
+    // M y (y itself without a metric).
+    Vector     M_y = problem.create_vector(), K_y = problem.create_vector();
+    const auto apply_metric = [&](const Vector &y, Vector &result) {
+      if (metric)
+        {
+          metric->vmult(result, y);
+          free_part(result);
+        }
+      else
+        result = y;
+    };
+
+    // Lanczos on T = K^{-1} M, self-adjoint in the M inner product, with
+    // full reorthogonalization: the Ritz values of the tridiagonal matrix
+    // approach T's extreme eigenvalues theta = 1 / mu, the largest (the
+    // smallest positive mu) and, if K has a negative eigenvalue, the most
+    // negative (the negative mu nearest zero), even where the spectrum
+    // clusters (mu near 1 for every isochoric mode with a metric), where
+    // subspace iteration stalls. Starts with every mode in it, the same on
+    // any number of ranks.
+    std::vector<Vector> Q;
+    Vector              q = problem.create_vector();
+    for (const auto i : q.locally_owned_elements())
+      q(i) = std::sin(0.7548776662 * double(i) + 0.3);
+    q.compress(VectorOperation::insert);
+    free_part(q);
+    apply_metric(q, M_y);
+    q /= std::sqrt(M_y * q);
+    std::vector<double> alpha, beta;
+    LowestEigenvalue    result;
+    FullMatrix<double>  S;
+    unsigned int        chosen = 0;
+    Vector              w = problem.create_vector();
     for (result.iterations = 1;; ++result.iterations)
       {
-        // Y = K^{-1} X, orthonormalized (twice Gram-Schmidt for safety).
-        for (unsigned int k = 0; k < m; ++k)
+        Q.push_back(q);
+        apply_metric(q, M_y);
+        problem.solve(M_y, w);
+        free_part(w);
+        alpha.push_back(M_y * w);
+        // w -= Q (Q^T M w), twice: the three-term recurrence alone loses
+        // orthogonality once a Ritz value has converged.
+        for (unsigned int pass = 0; pass < 2; ++pass)
           {
-            problem.solve(X[k], Y[k]);
-            free_part(Y[k]);
-            for (unsigned int pass = 0; pass < 2; ++pass)
-              for (unsigned int j = 0; j < k; ++j)
-                Y[k].add(-(Y[j] * Y[k]), Y[j]);
-            Y[k] /= Y[k].l2_norm();
+            apply_metric(w, K_y); // K_y holds M w here
+            for (const auto &q_i : Q)
+              w.add(-(q_i * K_y), q_i);
           }
-        // Rayleigh-Ritz: H = Y^T K Y, symmetric.
-        H.reinit(m, m);
-        for (unsigned int k = 0; k < m; ++k)
+        apply_metric(w, K_y);
+        beta.push_back(std::sqrt(std::max(0., K_y * w)));
+
+        // The tridiagonal matrix's eigenpairs.
+        const unsigned int       j = alpha.size();
+        LAPACKFullMatrix<double> T(j, j);
+        for (unsigned int i = 0; i < j; ++i)
           {
-            K.vmult(K_y, Y[k]);
-            for (unsigned int j = 0; j <= k; ++j)
-              H(j, k) = H(k, j) = Y[j] * K_y;
+            T(i, i) = alpha[i];
+            if (i + 1 < j)
+              T(i, i + 1) = T(i + 1, i) = beta[i];
           }
-        H.set_property(LAPACKSupport::symmetric);
-        FullMatrix<double> V;
-        dealii::Vector<double> values;
-        H.compute_eigenvalues_symmetric(-std::numeric_limits<double>::max(),
+        T.set_property(LAPACKSupport::symmetric);
+        dealii::Vector<double> theta;
+        T.compute_eigenvalues_symmetric(-std::numeric_limits<double>::max(),
                                         std::numeric_limits<double>::max(),
                                         0.,
-                                        values,
-                                        V);
-        for (unsigned int k = 0; k < m; ++k)
-          {
-            X[k] = 0;
-            for (unsigned int j = 0; j < m; ++j)
-              X[k].add(V(j, k), Y[j]);
-          }
-        unsigned int nearest = 0;
-        for (unsigned int k = 1; k < m; ++k)
-          if (std::abs(values[k]) < std::abs(values[nearest]))
-            nearest = k;
-        result.value = values[nearest];
-        result.vector = X[nearest];
-        if (std::abs(result.value - previous) <= tolerance * std::abs(result.value) ||
-            result.iterations == max_iterations)
+                                        theta,
+                                        S);
+        // Ascending: a negative theta[0] is a negative mu, else theta[j-1].
+        chosen = theta[0] < 0 ? 0 : j - 1;
+        result.value = 1. / theta[chosen];
+        // ||T x - theta x||_M = beta_j |s_j| for the Ritz vector x = Q s.
+        const double estimate = beta.back() * std::abs(S(j - 1, chosen)) / std::abs(theta[chosen]);
+        if (estimate <= tolerance || result.iterations == max_iterations ||
+            beta.back() <= 1e-14 * std::abs(theta[chosen]))
           break;
-        previous = result.value;
+        q = w;
+        q /= beta.back();
       }
-    K.vmult(K_y, result.vector);
-    K_y.add(-result.value, result.vector);
-    free_part(K_y);
-    result.residual = K_y.l2_norm() / std::abs(result.value);
+
+    result.vector = problem.create_vector();
+    for (unsigned int i = 0; i < Q.size(); ++i)
+      result.vector.add(S(i, chosen), Q[i]);
+    // r = K^{-1} M x - x / mu, measured in the M norm relative to 1 / mu:
+    // a bound on the relative error of 1 / mu (K^{-1} M is self-adjoint in
+    // the M inner product), explicitly rather than from the recurrence.
+    apply_metric(result.vector, M_y);
+    const double x_norm = std::sqrt(M_y * result.vector);
+    problem.solve(M_y, w);
+    free_part(w);
+    w.add(-1. / result.value, result.vector);
+    apply_metric(w, M_y);
+    result.residual = std::sqrt(std::max(0., M_y * w)) * std::abs(result.value) / x_norm;
     return result;
   }
 } // namespace softopt
