@@ -162,15 +162,16 @@ namespace softopt
     // at the last of them).
     for (const auto *f : functionals)
       columns.push_back(f->name());
-    // The eigenvalue nearest zero of K(a) phi = mu K_0 phi, K_0 the
+    // The smallest positive mu of K(a) phi = mu K_0 phi (past a fold the
+    // negative mu nearest zero), K_0 the
     // tangent at rest without the bulk term (StabilityMetric): each mode's
     // stiffness relative to its shear stiffness at rest.
     std::unique_ptr<StabilityMetric> metric;
     if (settings.output.stability)
       {
-        metric = std::make_unique<StabilityMetric>(problem, design.get_mapping(), settings.geometry);
+        metric = std::make_unique<StabilityMetric>(problem);
         columns.emplace_back("stability");
-        pcout << "Stability at rest (the lowest mu of K phi = mu K_0 phi, K_0 the "
+        pcout << "Stability at rest (the smallest positive mu of K phi = mu K_0 phi, K_0 the "
               << "tangent at rest without the bulk term; at least 1): "
               << lowest_eigenvalue(problem, a, 0., 1e-6, 100, &metric->matrix()).value
               << std::endl;
@@ -262,10 +263,14 @@ namespace softopt
       double stability = std::nan("");
       if (settings.output.stability)
         {
-          stability =
-            lowest_eigenvalue(problem, state, point.load_factor, 1e-6, 100, &metric->matrix())
-              .value;
+          const auto eigen =
+            lowest_eigenvalue(problem, state, point.load_factor, 1e-6, 100, &metric->matrix());
+          stability = eigen.value;
           row.push_back(CsvWriter::format(stability));
+          if (eigen.residual > 1e-4) // the value to 1e-4 relative at worst
+            pcout << "  warning: the stability eigenvalue did not converge in "
+                  << eigen.iterations << " Lanczos steps (error bound " << eigen.residual
+                  << "); its value is approximate" << std::endl;
         }
       row.push_back(std::to_string(point.newton_iterations));
       row.push_back(CsvWriter::format(point.residual_norm));

@@ -35,12 +35,14 @@ namespace softopt
                       "analysis of \"optimize\") writes, at every converged "
                       "step, load_path.csv's column \"stability\": the "
                       "stiffness of the softest mode relative to its shear "
-                      "stiffness at rest (the smallest mu of K phi = mu K_0 "
-                      "phi, K_0 the tangent at rest without the bulk term): "
-                      "at least 1 at rest, 0 at a limit point (where the part "
-                      "snaps under pressure control, whatever the mode), "
-                      "negative on a descending branch. Costs a factorization "
-                      "and a few dozen solves per step, and a second matrix.");
+                      "stiffness at rest (the smallest positive mu of K phi = "
+                      "mu K_0 phi, K_0 the tangent at rest without the bulk "
+                      "term): at least 1 at rest, 0 at a limit point (where "
+                      "the part snaps under pressure control, whatever the "
+                      "mode), and on a descending branch the negative mu "
+                      "nearest zero. Costs a factorization and a few dozen "
+                      "solves per step, a second matrix, and up to 100 "
+                      "vectors while it computes.");
     prm.declare_entry(
       "Tracked points",
       "",

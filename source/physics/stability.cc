@@ -50,14 +50,21 @@ namespace softopt
 
 
 
-  StabilityMetric::StabilityMetric(const HyperelasticProblem &problem,
-                                   const Mapping<3>          &mapping,
-                                   const Geometry            &geometry)
+  StabilityMetric::StabilityMetric(const HyperelasticProblem &problem)
     : material(std::make_unique<IsochoricPart>(problem.get_material()))
   {
-    at_rest = std::make_unique<HyperelasticProblem>(
-      problem.get_dof_handler().get_triangulation(), mapping, geometry, *material, 0.);
+    at_rest = std::make_unique<HyperelasticProblem>(problem.get_dof_handler().get_triangulation(),
+                                                    problem.get_mapping(),
+                                                    problem.get_geometry(),
+                                                    *material,
+                                                    0.);
     at_rest->setup_system();
+    // Its matrix multiplies the problem's vectors.
+    AssertThrow(at_rest->get_dof_handler().locally_owned_dofs() ==
+                    problem.get_dof_handler().locally_owned_dofs() &&
+                  at_rest->get_constraints().n_constraints() ==
+                    problem.get_constraints().n_constraints(),
+                ExcInternalError());
     HyperelasticProblem::Vector r, P;
     at_rest->assemble(at_rest->create_vector(), 0., r, P, true);
   }
@@ -130,6 +137,10 @@ namespace softopt
     free_part(q);
     apply_metric(q, M_y);
     q /= std::sqrt(M_y * q);
+    // With negative pivots K has as many negative eigenvalues (and, M being
+    // positive definite, as many negative mu): then the wanted end is the
+    // most negative theta, and the iteration goes on until it is negative.
+    const bool          unstable = problem.n_negative_pivots() > 0;
     std::vector<double> alpha, beta;
     LowestEigenvalue    result;
     FullMatrix<double>  S;
@@ -169,13 +180,16 @@ namespace softopt
                                         0.,
                                         theta,
                                         S);
-        // Ascending: a negative theta[0] is a negative mu, else theta[j-1].
-        chosen = theta[0] < 0 ? 0 : j - 1;
+        AssertThrow(theta.size() == j,
+                    ExcMessage("LAPACK found " + std::to_string(theta.size()) + " of the " +
+                               std::to_string(j) + " eigenvalues of the Lanczos matrix"));
+        // Ascending: theta[0] is the most negative, theta[j-1] the largest.
+        chosen       = unstable ? 0 : j - 1;
         result.value = 1. / theta[chosen];
         // ||T x - theta x||_M = beta_j |s_j| for the Ritz vector x = Q s.
         const double estimate = beta.back() * std::abs(S(j - 1, chosen)) / std::abs(theta[chosen]);
-        if (estimate <= tolerance || result.iterations == max_iterations ||
-            beta.back() <= 1e-14 * std::abs(theta[chosen]))
+        if ((estimate <= tolerance && (theta[chosen] < 0) == unstable) ||
+            result.iterations == max_iterations)
           break;
         q = w;
         q /= beta.back();

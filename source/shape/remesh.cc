@@ -362,16 +362,29 @@ namespace softopt
               << "// for a reproducible mesh.\n"
               << "Mesh.Algorithm3D = 10;\n"
               << "General.NumThreads = 1;\n";
-          // The split boundary's edges are up to half the size (n rounds
-          // up); without this gmsh would fill the whole body at their size
-          // (2.2 times the cells of the gripper at 0.8 mm), not at mesh_size.
-          if (mesh_size > 0)
-            geo << "Mesh.MeshSizeMax = " << mesh_size << ";\n"
-                << "Mesh.MeshSizeExtendFromBoundary = 0;\n";
-          geo
-              << "Surface Loop(1) = Surface{:};\n"
+          geo << "Surface Loop(1) = Surface{:};\n"
               << "Volume(1) = {1};\n"
               << "Physical Volume(1) = {1};\n";
+          // The split boundary's edges can be as short as half the size (n
+          // rounds up). gmsh would fill the whole body at their size (the
+          // gripper's schedule mesh at 0.8 mm: 272,152 tetrahedra); the
+          // size grows from theirs at the boundary to mesh_size at 2
+          // mesh_size inside instead (200,434). An abrupt jump to mesh_size
+          // made fewer (149,244) but flat ones, the worst near the remesh
+          // guard's quality of 0.2 (doc/benchmarks.md, session 20).
+          if (mesh_size > 0)
+            geo << "Mesh.MeshSizeMax = " << mesh_size << ";\n"
+                << "Mesh.MeshSizeExtendFromBoundary = 0;\n"
+                << "Field[1] = Distance;\n"
+                << "Field[1].SurfacesList = {Surface{:}};\n"
+                << "Field[2] = Threshold;\n"
+                << "Field[2].InField = 1;\n"
+                << "Field[2].SizeMin = " << std::min(mesh_size, mean_edge_length(parts) / n)
+                << ";\n"
+                << "Field[2].SizeMax = " << mesh_size << ";\n"
+                << "Field[2].DistMin = 0;\n"
+                << "Field[2].DistMax = " << 2 * mesh_size << ";\n"
+                << "Background Field = 2;\n";
           geo.close();
           AssertThrow(geo, ExcMessage("Cannot write " + stem + ".geo"));
           std::filesystem::remove(msh_file); // none of an earlier run

@@ -10,9 +10,9 @@ namespace softopt
   /** The eigenpair of lowest_eigenvalue(). */
   struct LowestEigenvalue
   {
-    /** The eigenvalue of the condensed tangent nearest zero (negative on a
-     * descending branch: the state is unstable under pressure): N/mm, or
-     * dimensionless with a metric M. */
+    /** The smallest positive eigenvalue, or on a descending branch (the
+     * state is unstable under pressure) the negative one nearest zero: N/mm,
+     * or dimensionless with a metric M (lowest_eigenvalue()). */
     double value = 0;
     /** ||K^{-1} M phi - phi / value||_M |value| for the eigenvector phi
      * (||phi||_M = 1; M = I without a metric): a bound on the relative
@@ -25,7 +25,7 @@ namespace softopt
 
   /**
    * The metric K_0 of lowest_eigenvalue(): the condensed tangent at rest of
-   * @p problem's body (same mesh, mapping, boundaries and DoF numbering)
+   * @p problem's body (its mesh, mapping, boundaries and DoF numbering)
    * with the same isochoric material and almost no bulk term (bulk modulus
    * G_0 / 900). Then K(0) - K_0 is positive semidefinite, so mu >= 1 at
    * rest, and mu = 1 for modes without a change of volume. Under load mu
@@ -37,9 +37,7 @@ namespace softopt
   class StabilityMetric
   {
   public:
-    StabilityMetric(const HyperelasticProblem &problem,
-                    const Mapping<3>          &mapping,
-                    const Geometry            &geometry);
+    explicit StabilityMetric(const HyperelasticProblem &problem);
     ~StabilityMetric();
 
     const PETScWrappers::MPI::SparseMatrix &
@@ -51,10 +49,10 @@ namespace softopt
   };
 
   /**
-   * The eigenvalue of the condensed tangent K(a) at load factor
-   * @p load_factor nearest zero on the side of the smallest: the smallest
-   * positive one, or, if K has a negative eigenvalue (a descending branch:
-   * unstable under pressure), the negative one nearest zero; on the free
+   * The smallest positive eigenvalue of the condensed tangent K(a) at load
+   * factor @p load_factor, or, if K has a negative eigenvalue (a
+   * descending branch: unstable under pressure; the factorization's
+   * negative pivots say so), the negative one nearest zero; on the free
    * displacement DoFs (the Dirichlet and the condensed pressure DoFs
    * removed). With @p metric M (symmetric positive definite on the free
    * DoFs) the same for mu of K phi = mu M phi: with the StabilityMetric, mu

@@ -19,9 +19,10 @@ namespace softopt
    *
    * With @p mesh_size > 0 (mm) the boundary is first refined: each face is
    * split into n x n triangles on its P2 surface, n the mean boundary edge
-   * over @p mesh_size (rounded up: boundary edges of mesh_size / 2 to
-   * mesh_size on average), and gmsh fills the interior at @p mesh_size, not
-   * at the boundary's size: a finer mesh of the same curved body
+   * over @p mesh_size (rounded up: boundary edges of at most mesh_size on
+   * average, and of at least half of it once n >= 2), and gmsh's size grows
+   * from the boundary's to @p mesh_size at a depth of 2 @p mesh_size
+   * (not the boundary's throughout): a finer mesh of the same curved body
    * (verification, the mesh-size schedule).
    *
    * Collective. Rank 0 writes @p msh_file (gmsh format 2.2) and, beside it,
