@@ -163,9 +163,9 @@ namespace softopt
     for (const auto *f : functionals)
       columns.push_back(f->name());
     // The smallest positive mu of K(a) phi = mu K_0 phi (past a fold the
-    // negative mu nearest zero), K_0 the
-    // tangent at rest without the bulk term (StabilityMetric): each mode's
-    // stiffness relative to its shear stiffness at rest.
+    // negative mu nearest zero), K_0 the tangent at rest without the bulk
+    // term (StabilityMetric): each mode's stiffness relative to its shear
+    // stiffness at rest.
     std::unique_ptr<StabilityMetric> metric;
     if (settings.output.stability)
       {

@@ -95,7 +95,6 @@ namespace softopt
     Vector r, P;
     problem.assemble(a, load_factor, r, P, true);
     problem.factorize();
-    const auto &K           = problem.tangent();
     const auto &constraints = problem.get_constraints();
 
     // Only the free displacement DoFs: the constrained and the condensed
@@ -135,8 +134,11 @@ namespace softopt
       q(i) = std::sin(0.7548776662 * double(i) + 0.3);
     q.compress(VectorOperation::insert);
     free_part(q);
-    apply_metric(q, M_y);
-    q /= std::sqrt(M_y * q);
+    Vector M_q = problem.create_vector();
+    apply_metric(q, M_q);
+    const double q_norm = std::sqrt(M_q * q);
+    q /= q_norm;
+    M_q /= q_norm;
     // With negative pivots K has as many negative eigenvalues (and, M being
     // positive definite, as many negative mu): then the wanted end is the
     // most negative theta, and the iteration goes on until it is negative.
@@ -149,10 +151,9 @@ namespace softopt
     for (result.iterations = 1;; ++result.iterations)
       {
         Q.push_back(q);
-        apply_metric(q, M_y);
-        problem.solve(M_y, w);
+        problem.solve(M_q, w);
         free_part(w);
-        alpha.push_back(M_y * w);
+        alpha.push_back(M_q * w);
         // w -= Q (Q^T M w), twice: the three-term recurrence alone loses
         // orthogonality once a Ritz value has converged.
         for (unsigned int pass = 0; pass < 2; ++pass)
@@ -191,8 +192,11 @@ namespace softopt
         if ((estimate <= tolerance && (theta[chosen] < 0) == unstable) ||
             result.iterations == max_iterations)
           break;
+        // The next q and M q (K_y holds M w).
         q = w;
         q /= beta.back();
+        M_q = K_y;
+        M_q /= beta.back();
       }
 
     result.vector = problem.create_vector();

@@ -347,10 +347,10 @@ namespace softopt
              std::filesystem::path(msh_file).stem())
               .string();
           // Each face split n x n: edges of at most mesh_size on average.
+          const double       mean_edge = mean_edge_length(parts);
           const unsigned int n =
             mesh_size > 0 ?
-              std::max(1u, static_cast<unsigned int>(
-                              std::ceil(mean_edge_length(parts) / mesh_size - 1e-9))) :
+              std::max(1u, static_cast<unsigned int>(std::ceil(mean_edge / mesh_size - 1e-9))) :
               1;
           const auto surface = write_surface(parts, stem + ".surface.msh", n);
           std::ofstream geo(stem + ".geo");
@@ -379,7 +379,7 @@ namespace softopt
                 << "Field[1].SurfacesList = {Surface{:}};\n"
                 << "Field[2] = Threshold;\n"
                 << "Field[2].InField = 1;\n"
-                << "Field[2].SizeMin = " << std::min(mesh_size, mean_edge_length(parts) / n)
+                << "Field[2].SizeMin = " << std::min(mesh_size, mean_edge / n)
                 << ";\n"
                 << "Field[2].SizeMax = " << mesh_size << ";\n"
                 << "Field[2].DistMin = 0;\n"
