@@ -239,11 +239,12 @@ namespace softopt
           const bool        shape_alone = lf.empty();
           // One of the shape alone (thin walls) is the same all along; one of
           // several states (compliance ratio) has a value only at the last of
-          // its targets, once the path has passed them all.
+          // its targets, once the path has passed them all, and one of the
+          // tangent at its load factor (softening) only there.
           double value = std::nan("");
           if (shape_alone && !std::isnan(extrema[i].at_target))
             value = extrema[i].at_target;
-          else if (lf.size() <= 1)
+          else if (lf.size() <= 1 && f.along_load_path())
             value = f.evaluate_at(problem, design, state);
           else if (point.at_target && point.load_factor == lf.back())
             {

@@ -43,6 +43,14 @@ namespace softopt
 
 
 
+  bool
+  Functional::along_load_path() const
+  {
+    return quantity->along_load_path();
+  }
+
+
+
   double
   Functional::evaluate(const HyperelasticProblem &problem,
                        const DesignConfiguration &design,

@@ -83,6 +83,14 @@ namespace softopt
 
 
 
+  const HyperelasticProblem &
+  StabilityMetric::at_rest_problem() const
+  {
+    return *at_rest;
+  }
+
+
+
   LowestEigenvalue
   lowest_eigenvalue(HyperelasticProblem               &problem,
                     const HyperelasticProblem::Vector &a,

@@ -56,6 +56,10 @@ namespace softopt
              const States              &states,
              Derivatives               *derivatives) const;
 
+    /** Quantity::along_load_path(). */
+    bool
+    along_load_path() const;
+
     /** The value along a load path: every state it reads is @p a. */
     double
     evaluate_at(const HyperelasticProblem &problem,

@@ -54,6 +54,16 @@ namespace softopt
     const std::vector<double> &
     load_factors() const;
 
+    /** Whether value() of a single state means something for a state at
+     * another load factor than its own, as along a load path (false for one
+     * that reads the tangent, whose load stiffness is that of its load
+     * factor: the final analysis evaluates it at its target only). */
+    virtual bool
+    along_load_path() const
+    {
+      return true;
+    }
+
     /**
      * The value at @p states of @p problem on @p design, and with a non-null
      * @p derivatives also the partial derivatives, which it sets up (one

@@ -43,6 +43,11 @@ namespace softopt
     const PETScWrappers::MPI::SparseMatrix &
     matrix() const;
 
+    /** The body at rest whose tangent matrix() is: its residual's shape
+     * derivative is that of K_0 (the quantity "softening"). */
+    const HyperelasticProblem &
+    at_rest_problem() const;
+
   private:
     std::unique_ptr<const Material>     material;
     std::unique_ptr<HyperelasticProblem> at_rest;

@@ -1,0 +1,196 @@
+// How soft the softest mode of the body has become at a target: a
+// constraint that keeps a limit point (a snap-through) away from the target
+// pressure by the tangent itself (doc/theory.md, "The isochoric metric").
+
+#include <softopt/base/step_failure.h>
+#include <softopt/functionals/quantity.h>
+#include <softopt/physics/stability.h>
+#include <softopt/shape/residual_shape_derivative.h>
+
+#include <cmath>
+
+namespace softopt
+{
+  namespace
+  {
+    /**
+     * Q = 1 / mu for the smallest mu of K(a) phi = mu K_0 phi at the
+     * subsection's "Load factor": K the condensed tangent with the follower
+     * load, K_0 the StabilityMetric (the shear stiffness at rest). Q is 1 at
+     * rest for a volume-preserving mode and grows without bound towards a
+     * limit point (mu -> 0), so "Q <= Tolerance" keeps every mode at least
+     * 1 / Tolerance as stiff as at rest. A state past a limit point (mu < 0,
+     * the factorization has negative pivots) is refused like an inverted
+     * design.
+     *
+     * Its derivatives, for a simple eigenvalue and phi^T K_0 phi = 1:
+     *   dmu = phi^T dK phi - mu phi^T dK_0 phi,
+     * with K = dR/da of the condensed residual R(a, X), K_0 = dR_0/da at
+     * a = 0, by central differences along the mode (step h, |h phi| = 1e-6
+     * of the body's size; errors near 1e-7 relative, tests/softening):
+     *   d/da (phi^T K phi) = [K(a + h phi) - K(a - h phi)] phi / 2h, since
+     *     K is symmetric (R is the gradient of the condensed potential, the
+     *     follower pressure on the closed cavity included), with the element
+     *     pressures p~(u) at a +- h phi (K depends on them, R does not);
+     *     a second difference of R instead loses half the digits to rounding;
+     *   d/dX (phi^T K phi) = phi^T [dR/dX(a + h phi) - dR/dX(a - h phi)] / 2h
+     *     (residual_shape_derivative()), and the same at rest for K_0.
+     * The differences need the mode to about 1e-12 (Lanczos to that bound:
+     * 40 to 100 steps on the sphere); with 1e-8 the gradient is off by
+     * 1e-4. An eigenvalue of multiplicity two (an axisymmetric design) has
+     * no derivative: MMA then sees the one Lanczos finds.
+     *
+     * Cost per design: one more assembly and factorization and the Lanczos
+     * solves, and for the gradient two more assemblies and four shape
+     * derivatives; memory for a second tangent and its factorization.
+     */
+    class Softening : public Quantity
+    {
+    public:
+      static void
+      declare_parameters(ParameterHandler &)
+      {}
+
+      Softening(ParameterHandler &, const InputFile &, const std::string &, const double load_factor)
+        : Quantity({load_factor})
+      {}
+
+      bool
+      along_load_path() const override
+      {
+        return false;
+      }
+
+      double
+      value(const HyperelasticProblem &problem,
+            const DesignConfiguration &design,
+            const States              &states,
+            Derivatives               *derivatives) const override
+      {
+        const double load_factor = load_factors()[0];
+        Vector       a           = problem.create_vector();
+        for (const auto i : a.locally_owned_elements())
+          a(i) = (*states[0])(i);
+        a.compress(VectorOperation::insert);
+
+        // The same physics on the same mesh and mapping, with a tangent of
+        // its own: lowest_eigenvalue() assembles and factorizes, and
+        // @p problem's factorization is kept for its Newton steps and adjoints.
+        HyperelasticProblem tangent(problem.get_dof_handler().get_triangulation(),
+                                    problem.get_mapping(),
+                                    problem.get_geometry(),
+                                    problem.get_material(),
+                                    problem.get_pressure());
+        tangent.setup_system();
+        const StabilityMetric metric(tangent);
+        if (!is_cached(a, design))
+          {
+            const auto mode =
+              lowest_eigenvalue(tangent, a, load_factor, 1e-12, 300, &metric.matrix());
+            AssertThrow(mode.residual < 1e-6,
+                        ExcMessage("softening: the softest mode at load factor " +
+                                   std::to_string(load_factor) + " did not converge in " +
+                                   std::to_string(mode.iterations) +
+                                   " Lanczos steps (relative error bound " +
+                                   std::to_string(mode.residual) + ")."));
+            if (!(mode.value > 0))
+              throw StepFailure("softening: the state at load factor " +
+                                std::to_string(load_factor) +
+                                " is past a limit point (its softest mode has mu = " +
+                                std::to_string(mode.value) + " < 0): unstable under pressure.");
+            cache(a, design, mode, metric);
+          }
+        if (derivatives == nullptr)
+          return 1. / mu;
+
+        // |h phi| = 1e-6 of the body's size.
+        const double h = 1e-6 * design.positions().linfty_norm() / phi.linfty_norm();
+        Vector       shifted = problem.create_vector(), K_phi_plus = problem.create_vector(),
+               K_phi_minus = problem.create_vector(), R, P;
+        const auto tangent_along = [&](const double s, Vector &K_phi) {
+          shifted = a;
+          shifted.add(s, phi);
+          // K(a) is the Hessian of the condensed potential only with the
+          // element pressures p~(u) (K_uu depends on them, R does not).
+          tangent.store_pressure(shifted);
+          tangent.assemble(shifted, load_factor, R, P, true);
+          tangent.tangent().vmult(K_phi, phi);
+          return residual_shape_derivative(problem, design, shifted, load_factor, phi);
+        };
+        const Vector dKphi_plus  = tangent_along(h, K_phi_plus);
+        const Vector dKphi_minus = tangent_along(-h, K_phi_minus);
+        const auto &at_rest        = metric.at_rest_problem();
+        const auto  rest_along     = [&](const double s) {
+          shifted = 0;
+          shifted.add(s, phi);
+          return residual_shape_derivative(at_rest, design, shifted, 0., phi);
+        };
+        const Vector dK0phi_plus  = rest_along(h);
+        const Vector dK0phi_minus = rest_along(-h);
+
+        // dQ = -dmu / mu^2.
+        const double c = -1. / (mu * mu);
+        derivatives->d_da = {K_phi_plus};
+        derivatives->d_da[0] -= K_phi_minus;
+        derivatives->d_da[0] *= c / (2 * h);
+        problem.zero_condensed(derivatives->d_da[0]);
+        derivatives->d_dX = dKphi_plus;
+        derivatives->d_dX.add(-1., dKphi_minus, -mu, dK0phi_plus);
+        derivatives->d_dX.add(mu, dK0phi_minus);
+        derivatives->d_dX *= c / (2 * h);
+        return 1. / mu;
+      }
+
+    private:
+      /** Whether the softest mode of the state @p a on the design's
+       * positions X is the one of the last evaluation (gradients() follows
+       * evaluate() on the same state). */
+      bool
+      is_cached(const Vector &a, const DesignConfiguration &design) const
+      {
+        const auto &X = design.positions();
+        if (cached_a.size() != a.size() || cached_X.size() != X.size())
+          return false;
+        Vector difference = a;
+        difference -= cached_a;
+        if (difference.linfty_norm() != 0)
+          return false;
+        Vector X_difference = design.create_vector();
+        for (const auto i : X_difference.locally_owned_elements())
+          X_difference(i) = X(i) - cached_X(i);
+        X_difference.compress(VectorOperation::insert);
+        return X_difference.linfty_norm() == 0;
+      }
+
+      /** Keeps the mode, normalized to phi^T K_0 phi = 1. */
+      void
+      cache(const Vector                &a,
+            const DesignConfiguration &design,
+            const LowestEigenvalue    &mode,
+            const StabilityMetric     &metric) const
+      {
+        cached_a = a;
+        cached_X = design.create_vector();
+        for (const auto i : cached_X.locally_owned_elements())
+          cached_X(i) = design.positions()(i);
+        cached_X.compress(VectorOperation::insert);
+        mu  = mode.value;
+        phi = mode.vector;
+        Vector K_0_phi = phi;
+        metric.matrix().vmult(K_0_phi, phi);
+        phi /= std::sqrt(K_0_phi * phi);
+      }
+
+      mutable Vector cached_a, cached_X, phi;
+      mutable double mu = 0;
+    };
+  } // namespace
+
+  SOFTOPT_REGISTER_QUANTITY(Softening,
+                            "softening",
+                            "1 / mu for the softest mode phi of K phi = mu K_0 phi at "
+                            "\"Load factor\": its shear stiffness at rest (K_0, "
+                            "the isochoric metric) over its stiffness there "
+                            "(dimensionless; 1 at rest, infinite at a limit "
+                            "point; a state past one is refused).")
+} // namespace softopt
