@@ -72,6 +72,9 @@ namespace softopt
         for (const auto i : a.locally_owned_elements())
           a(i) = (*states[0])(i);
         a.compress(VectorOperation::insert);
+        const bool cached = is_cached(a, design);
+        if (cached && derivatives == nullptr)
+          return 1. / mu;
 
         // The same physics on the same mesh and mapping, with a tangent of
         // its own: lowest_eigenvalue() assembles and factorizes, and
@@ -83,7 +86,7 @@ namespace softopt
                                     problem.get_pressure());
         tangent.setup_system();
         const StabilityMetric metric(tangent);
-        if (!is_cached(a, design))
+        if (!cached)
           {
             const auto mode =
               lowest_eigenvalue(tangent, a, load_factor, 1e-12, 300, &metric.matrix());
