@@ -3,6 +3,7 @@
 #include <deal.II/distributed/fully_distributed_tria.h>
 
 #include <softopt/app/analysis.h>
+#include <softopt/base/step_failure.h>
 #include <softopt/shape/self_intersection.h>
 #include <softopt/io/output_directory.h>
 #include <softopt/functionals/design_surface.h>
@@ -252,8 +253,18 @@ namespace softopt
               for (const double l : lf)
                 if (const auto it = target_states.find(l); it != target_states.end())
                   at.push_back(&it->second);
+              // A state the quantity refuses (softening past a limit point)
+              // is a NaN in the table, not the end of the analysis.
               if (at.size() == lf.size())
-                extrema[i].at_target = value = f.evaluate(problem, design, at, nullptr);
+                try
+                  {
+                    extrema[i].at_target = value = f.evaluate(problem, design, at, nullptr);
+                  }
+                catch (const StepFailure &failure)
+                  {
+                    pcout << "  " << f.name() << " at load factor " << lf.back()
+                          << ": no value (" << failure.what() << ")" << std::endl;
+                  }
             }
           row.push_back(CsvWriter::format(value));
           extrema[i].add(value, p_kPa);

@@ -558,7 +558,54 @@ namespace softopt
           report.secant_alpha = prediction->alpha;
           return true;
         }
-    return newton_at_targets(x.states, states, report.warm_start_failure);
+    if (newton_at_targets(x.states, states, report.warm_start_failure))
+      return true;
+    return parameters.optimization.warm_start_substeps > 0 && substep_start(x, states);
+  }
+
+
+
+  bool
+  DesignProblem::substep_start(const DesignIterate &x, std::map<double, Vector> &states)
+  {
+    // A homotopy in the design: near a fold of the design's own path the
+    // new state is too far from the old one for Newton, but the states of
+    // the designs in between connect them (the extender's bellows at 18 mm,
+    // doc/theory.md). Intermediate psi need not solve the filter.
+    const Vector psi = design->shape_field();
+    const double smallest =
+      std::ldexp(0.5, -static_cast<int>(parameters.optimization.warm_start_substeps));
+    std::map<double, Vector> current = x.states;
+    double                   t = 0, dt = 0.5;
+    unsigned int             steps = 0;
+    bool                     reached = true;
+    while (t < 1)
+      {
+        const double t_next = std::min(1., t + dt);
+        Vector       psi_t  = x.psi;
+        psi_t.sadd(1. - t_next, t_next, psi);
+        design->set_shape_field(psi_t);
+        std::map<double, Vector> next;
+        if (newton_at_targets(current, next, report.substep_failure))
+          {
+            current = std::move(next);
+            t       = t_next;
+            dt      = std::min(2 * dt, 0.5);
+            ++steps;
+          }
+        else if ((dt /= 2) < smallest)
+          {
+            reached = false;
+            break;
+          }
+      }
+    design->set_shape_field(psi);
+    if (!reached)
+      return false;
+    states         = std::move(current);
+    report.substeps = steps;
+    report.substep_failure.clear();
+    return true;
   }
 
 

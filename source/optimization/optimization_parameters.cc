@@ -114,8 +114,9 @@ namespace softopt
                       "converged states of the previous design at the same "
                       "target load factors (Newton at fixed load factor), and "
                       "its adjoint solve from the last Newton factorization; "
-                      "falls back to path following from zero when Newton "
-                      "fails from there (see doc/theory.md).");
+                      "falls back to design substeps (\"Warm start "
+                      "substeps\") and then to path following from zero when "
+                      "Newton fails from there (see doc/theory.md).");
     prm.declare_entry("Warm start predictor",
                       "secant",
                       Patterns::Selection("secant|none"),
@@ -125,6 +126,17 @@ namespace softopt
                       "step fewer, doc/theory.md), falling back to the last "
                       "design's states if Newton fails from there; \"none\" "
                       "starts from the last design's states.");
+    prm.declare_entry("Warm start substeps",
+                      "5",
+                      Patterns::Integer(0, 10),
+                      "When Newton fails from both warm starts, the design is "
+                      "moved from the accepted one to the new one in steps "
+                      "(psi_o + t (psi - psi_o), t halved on a failure, at "
+                      "most this many halvings of the first half step), each "
+                      "with Newton at every target from the states of the "
+                      "step before; only if that fails too does the path "
+                      "start from zero. 0: straight to the path from zero "
+                      "(doc/theory.md).");
     prm.declare_entry("Step halvings",
                       "3",
                       Patterns::Integer(0, 20),
@@ -266,6 +278,7 @@ namespace softopt
     refuse_limit_points  = prm.get("Limit point below a target") == "refuse";
     warm_start           = prm.get_bool("Warm start");
     secant_predictor     = prm.get("Warm start predictor") == "secant";
+    warm_start_substeps  = prm.get_integer("Warm start substeps");
     step_halvings        = prm.get_integer("Step halvings");
     refuse_self_intersections = prm.get_bool("Refuse self-intersecting designs");
     prm.leave_subsection();

@@ -439,9 +439,15 @@ namespace softopt
     if (!problem.path_report().secant_failure.empty())
       pcout << " (from the last design's states: the secant start failed, "
             << problem.path_report().secant_failure << ")";
-    if (!problem.path_report().warm_start_failure.empty())
-      pcout << " (path from zero: the warm start failed, "
-            << problem.path_report().warm_start_failure << ")";
+    const auto &path = problem.path_report();
+    if (!path.warm_start_failure.empty() && path.substeps > 0)
+      pcout << " (in " << path.substeps << " design substeps: Newton failed from the last "
+            << "design's states, " << path.warm_start_failure << ")";
+    else if (!path.warm_start_failure.empty())
+      pcout << " (path from zero: the warm start failed, " << path.warm_start_failure
+            << (path.substep_failure.empty() ? "" : "; the design substeps failed, " +
+                                                       path.substep_failure)
+            << ")";
     if (compared)
       pcout << "  from rest: " << (branch->switched ? "another branch" : "same branch")
             << " (" << std::setprecision(2) << branch->difference << ")"

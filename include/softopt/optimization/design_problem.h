@@ -186,6 +186,11 @@ namespace softopt
        * the last design's states). */
       std::string  secant_failure;
       std::string  warm_start_failure;
+      /** Design substeps that took the states to the new design after
+       * both warm starts failed (0: none were needed, or they failed too
+       * and warm_start_failure says why). */
+      unsigned int substeps = 0;
+      std::string  substep_failure;
       /** Over all targets and starts (a start that failed counts the
        * targets where it converged). */
       unsigned int newton_iterations = 0;
@@ -219,10 +224,17 @@ namespace softopt
                     std::map<double, Vector> &states);
 
     /** Newton at each target from the secant prediction of its state,
-     * else from the previous design's state there; false if Newton fails
-     * from both for one of them. */
+     * else from the previous design's state there, else along design
+     * substeps (substep_start()); false if all fail. */
     bool
     warm_start(const DesignIterate &x, std::map<double, Vector> &states);
+
+    /** Moves the design from the accepted psi of @p x to the current one in
+     * steps of t (halved on a failure, doubled after a success), Newton at
+     * every target from the states of the step before; leaves the current
+     * psi in place either way. */
+    bool
+    substep_start(const DesignIterate &x, std::map<double, Vector> &states);
 
     /** Newton at every target from @p start; true (and @p states the
      * converged ones) if it converged for all. */

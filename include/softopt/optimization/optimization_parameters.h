@@ -48,6 +48,9 @@ namespace softopt
     /** Whether the warm start extrapolates the states along the secant
      * through the last two designs (SecantPredictor). */
     bool         secant_predictor     = true;
+    /** Halvings of the design substep when both warm starts fail (0: the
+     * path from zero at once). */
+    unsigned int warm_start_substeps  = 5;
     /** Halvings of a refused MMA step before the run stops. */
     unsigned int step_halvings = 3;
     /** Whether a design whose surface intersects itself is refused. */
