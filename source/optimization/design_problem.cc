@@ -577,9 +577,7 @@ namespace softopt
       std::ldexp(0.5, -static_cast<int>(parameters.optimization.warm_start_substeps));
     std::map<double, Vector> current = x.states;
     double                   t = 0, dt = 0.5;
-    unsigned int             steps = 0;
-    bool                     reached = true;
-    while (t < 1)
+    while (t < 1 && dt >= smallest)
       {
         const double t_next = std::min(1., t + dt);
         Vector       psi_t  = x.psi;
@@ -591,19 +589,18 @@ namespace softopt
             current = std::move(next);
             t       = t_next;
             dt      = std::min(2 * dt, 0.5);
-            ++steps;
+            ++report.substeps;
           }
-        else if ((dt /= 2) < smallest)
-          {
-            reached = false;
-            break;
-          }
+        else
+          dt /= 2;
       }
     design->set_shape_field(psi);
-    if (!reached)
-      return false;
-    states         = std::move(current);
-    report.substeps = steps;
+    if (t < 1)
+      {
+        report.substeps = 0;
+        return false;
+      }
+    states = std::move(current);
     report.substep_failure.clear();
     return true;
   }

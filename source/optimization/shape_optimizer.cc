@@ -428,18 +428,17 @@ namespace softopt
       problem.hyperelastic_problem().get_dof_handler().get_triangulation().n_global_active_cells()));
     history->add_row(row);
 
+    const auto &path = problem.path_report();
     pcout << "iteration " << std::setw(4) << iteration;
     for (unsigned int i = 0; i < values.size(); ++i)
       pcout << "  " << problem.functionals()[i]->name() << " "
             << std::setprecision(8) << values[i];
     pcout << "  max|dd| " << std::setprecision(4) << change << " mm  min J_psi "
-          << health.min_J_psi << "  Newton "
-          << problem.path_report().newton_iterations
-          << (problem.path_report().warm_started ? " (warm)" : "");
-    if (!problem.path_report().secant_failure.empty())
+          << health.min_J_psi << "  Newton " << path.newton_iterations
+          << (path.warm_started ? " (warm)" : "");
+    if (!path.secant_failure.empty())
       pcout << " (from the last design's states: the secant start failed, "
-            << problem.path_report().secant_failure << ")";
-    const auto &path = problem.path_report();
+            << path.secant_failure << ")";
     if (!path.warm_start_failure.empty() && path.substeps > 0)
       pcout << " (in " << path.substeps << " design substeps: Newton failed from the last "
             << "design's states, " << path.warm_start_failure << ")";

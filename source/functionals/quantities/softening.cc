@@ -7,9 +7,10 @@
 #include <softopt/physics/stability.h>
 #include <softopt/shape/residual_shape_derivative.h>
 
+#include <deal.II/grid/grid_tools.h>
+
 #include <cmath>
 #include <iostream>
-#include <limits>
 
 namespace softopt
 {
@@ -220,19 +221,16 @@ namespace softopt
       static double
       body_size(const Triangulation<3> &triangulation)
       {
-        Point<3> lower, upper;
-        for (unsigned int d = 0; d < 3; ++d)
-          lower[d] = std::numeric_limits<double>::max(), upper[d] = -lower[d];
-        for (const auto &v : triangulation.get_vertices())
-          for (unsigned int d = 0; d < 3; ++d)
-            lower[d] = std::min(lower[d], v[d]), upper[d] = std::max(upper[d], v[d]);
+        const auto [lower, upper] =
+          GridTools::compute_bounding_box(triangulation).get_boundary_points();
         const MPI_Comm comm = triangulation.get_communicator();
+        Point<3>       global_lower, global_upper;
         for (unsigned int d = 0; d < 3; ++d)
           {
-            lower[d] = Utilities::MPI::min(lower[d], comm);
-            upper[d] = Utilities::MPI::max(upper[d], comm);
+            global_lower[d] = Utilities::MPI::min(lower[d], comm);
+            global_upper[d] = Utilities::MPI::max(upper[d], comm);
           }
-        return upper.distance(lower);
+        return global_upper.distance(global_lower);
       }
     };
   } // namespace
