@@ -205,35 +205,38 @@ namespace softopt
                                ") mm); the shape is refused."));
       }
 
-    TimerOutput::Scope scope(timer_output, "path following");
-    report     = PathReport();
-    tangent_at = -1;
-    if (parameters.optimization.warm_start && warm_start(x, states))
-      {
-        report.warm_started = true;
-        tangent_at          = targets.back();
-      }
-    else
-      {
-        ConditionalOStream quiet(std::cout, false);
-        const auto         result = path_following.run(
-          *problem,
-          parameters.newton,
-          targets,
-          [this](const PathFollowing::PathPoint &point, const Vector &) {
-            report.newton_iterations += point.newton_iterations;
-            return std::string();
-          },
-          quiet);
-        AssertThrow(result.target_states.size() == targets.size(),
-                    ExcMessage("The load path of this design did not reach "
-                               "every target load factor: " +
-                               result.stop_reason + snap_hint(result)));
-        states.clear();
-        for (unsigned int i = 0; i < targets.size(); ++i)
-          states.emplace(result.target_load_factors[i], result.target_states[i]);
-      }
+    {
+      TimerOutput::Scope scope(timer_output, "path following");
+      report     = PathReport();
+      tangent_at = -1;
+      if (parameters.optimization.warm_start && warm_start(x, states))
+        {
+          report.warm_started = true;
+          tangent_at          = targets.back();
+        }
+      else
+        {
+          ConditionalOStream quiet(std::cout, false);
+          const auto         result = path_following.run(
+            *problem,
+            parameters.newton,
+            targets,
+            [this](const PathFollowing::PathPoint &point, const Vector &) {
+              report.newton_iterations += point.newton_iterations;
+              return std::string();
+            },
+            quiet);
+          AssertThrow(result.target_states.size() == targets.size(),
+                      ExcMessage("The load path of this design did not reach "
+                                 "every target load factor: " +
+                                 result.stop_reason + snap_hint(result)));
+          states.clear();
+          for (unsigned int i = 0; i < targets.size(); ++i)
+            states.emplace(result.target_load_factors[i], result.target_states[i]);
+        }
+    }
 
+    TimerOutput::Scope  scope(timer_output, "functionals");
     std::vector<double> values;
     for (const auto *f : functionals_)
       values.push_back(
@@ -391,13 +394,16 @@ namespace softopt
                     factorized = true;
                     tangent_at = -1;
                   }
-                {
-                  TimerOutput::Scope scope(timer_output, "adjoint: solve");
-                  if (partials[i].d_da.empty()) // dg/da^j and dg/dX
+                if (partials[i].d_da.empty()) // dg/da^j and dg/dX
+                  {
+                    TimerOutput::Scope scope(timer_output, "adjoint: functional derivatives");
                     functionals_[i]->evaluate(*problem,
                                               *design,
                                               states_at(x.states, load_factors),
                                               &partials[i]);
+                  }
+                {
+                  TimerOutput::Scope scope(timer_output, "adjoint: solve");
                   if (assembled)
                     problem->solve_kept(partials[i].d_da[j], mu_a);
                   else

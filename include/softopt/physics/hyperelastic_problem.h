@@ -18,8 +18,10 @@
 #include <softopt/solvers/cell_matrix_scatter.h>
 #include <softopt/solvers/direct_solver.h>
 
+#include <map>
 #include <memory>
 #include <string>
+#include <typeindex>
 
 namespace softopt
 {
@@ -201,6 +203,24 @@ namespace softopt
     const Statistics &
     get_statistics() const;
 
+    /**
+     * The object of type T kept with this problem, made by @p make (a
+     * callable returning std::unique_ptr<T>) on the first call: work that
+     * a functional would otherwise repeat for every design on the same mesh
+     * and DoFs, such as softening's second tangent. It lives as long as the
+     * problem, so it never outlives the mesh it was built on (a remesh
+     * builds a new problem).
+     */
+    template <typename T, typename Make>
+    T &
+    companion(const Make &make) const
+    {
+      std::shared_ptr<void> &slot = companions[std::type_index(typeid(T))];
+      if (!slot)
+        slot = std::shared_ptr<T>(make());
+      return *static_cast<T *>(slot.get());
+    }
+
   private:
     /** GMRES on the kept factorization (DirectSolver::solve_krylov). */
     void
@@ -249,6 +269,9 @@ namespace softopt
     DirectSolver::Parameters         linear_solver;
 
     mutable Statistics statistics;
+
+    /** companion(); the last member, so destroyed before the DoFs. */
+    mutable std::map<std::type_index, std::shared_ptr<void>> companions;
   };
 } // namespace softopt
 

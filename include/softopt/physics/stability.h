@@ -37,8 +37,14 @@ namespace softopt
   class StabilityMetric
   {
   public:
+    /** Sets up the body at rest and assembles K_0. */
     explicit StabilityMetric(const HyperelasticProblem &problem);
     ~StabilityMetric();
+
+    /** Assembles K_0 again: for a new design on the same mesh (the
+     * mapping's positions changed). */
+    void
+    reassemble();
 
     const PETScWrappers::MPI::SparseMatrix &
     matrix() const;
@@ -74,6 +80,9 @@ namespace softopt
    * factorizes K (the factorization is left for the next solve). Stops
    * when the Ritz pair's residual estimate falls below @p tolerance
    * relative, or after @p max_iterations Lanczos steps (reported).
+   * @p start, if given, is a guess of the mode (the last design's): Lanczos
+   * starts from it plus a tenth of the start that has every mode in it, so
+   * that a mode that has become softer than the guessed one is still found.
    * Collective.
    */
   LowestEigenvalue
@@ -82,7 +91,8 @@ namespace softopt
                     const double                       load_factor,
                     const double                       tolerance      = 1e-6,
                     const unsigned int                 max_iterations = 100,
-                    const PETScWrappers::MPI::SparseMatrix *metric    = nullptr);
+                    const PETScWrappers::MPI::SparseMatrix *metric    = nullptr,
+                    const HyperelasticProblem::Vector      *start     = nullptr);
 } // namespace softopt
 
 #endif

@@ -16,6 +16,59 @@ namespace softopt
 {
   namespace
   {
+    /** The set-up that does not change with the design: softening's own
+     * tangent (lowest_eigenvalue() factorizes it; the design problem's
+     * factorization is kept for its Newton steps and adjoints) and the
+     * metric's body at rest, on the same mesh, mapping and DoF numbering
+     * as the design problem; kept with it (HyperelasticProblem::companion). */
+    struct Workspace
+    {
+      explicit Workspace(const HyperelasticProblem &problem)
+        : tangent(problem.get_dof_handler().get_triangulation(),
+                  problem.get_mapping(),
+                  problem.get_geometry(),
+                  problem.get_material(),
+                  problem.get_pressure())
+      {
+        tangent.setup_system();
+        AssertThrow(tangent.get_dof_handler().locally_owned_dofs() ==
+                      problem.get_dof_handler().locally_owned_dofs(),
+                    ExcInternalError("softening: its tangent numbers the DoFs differently"));
+        metric = std::make_unique<StabilityMetric>(tangent);
+      }
+
+      HyperelasticProblem              tangent;
+      std::unique_ptr<StabilityMetric> metric;
+      /** The positions X of the design whose K_0 the metric holds. */
+      DesignConfiguration::Vector metric_at;
+    };
+
+    /** Whether @p kept holds the design's positions X (same layout and
+     * values). */
+    bool
+    same_positions(const DesignConfiguration::Vector &kept, const DesignConfiguration &design)
+    {
+      const auto &X = design.positions();
+      if (kept.size() != X.size() || kept.locally_owned_elements() != X.locally_owned_elements())
+        return false;
+      auto difference = design.create_vector();
+      for (const auto i : difference.locally_owned_elements())
+        difference(i) = X(i) - kept(i);
+      difference.compress(VectorOperation::insert);
+      return difference.linfty_norm() == 0;
+    }
+
+    /** A copy of the design's positions X. */
+    DesignConfiguration::Vector
+    copy_positions(const DesignConfiguration &design)
+    {
+      auto X = design.create_vector();
+      for (const auto i : X.locally_owned_elements())
+        X(i) = design.positions()(i);
+      X.compress(VectorOperation::insert);
+      return X;
+    }
+
     /**
      * Q = 1 / mu for the smallest mu of K(a) phi = mu K_0 phi at the
      * subsection's "Load factor": K the condensed tangent with the follower
@@ -44,11 +97,13 @@ namespace softopt
      * 1e-4. An eigenvalue of multiplicity two (an axisymmetric design) has
      * no derivative: MMA then sees the one Lanczos finds.
      *
-     * Cost per design: the set-up of a second problem on the same mesh (DoFs,
-     * sparsity, a MUMPS analysis) and of K_0 at every evaluation, one more
-     * assembly and factorization with the Lanczos solves, and for the
-     * gradient the set-up again, two more assemblies and four shape
-     * derivatives; memory for a second tangent and its factorization.
+     * Cost per design: one more assembly and factorization with 20 to 50
+     * Lanczos solves (started from the last design's mode), K_0 assembled
+     * again, and for the gradient two more assemblies and four shape
+     * derivatives; per mesh, the set-up of a second problem (DoFs,
+     * sparsity, the MUMPS analysis) and of K_0's, kept with the design
+     * problem (Workspace); memory for a second tangent and its
+     * factorization.
      *
      * What it does not do: with "Limit point below a target = follow" a
      * target reached after a snap-through lies on a branch that is stable
@@ -87,27 +142,32 @@ namespace softopt
         if (cached && derivatives == nullptr)
           return 1. / mu;
 
-        // The same physics on the same mesh and mapping, with a tangent of
-        // its own: lowest_eigenvalue() assembles and factorizes, and
-        // @p problem's factorization is kept for its Newton steps and adjoints.
-        HyperelasticProblem tangent(problem.get_dof_handler().get_triangulation(),
-                                    problem.get_mapping(),
-                                    problem.get_geometry(),
-                                    problem.get_material(),
-                                    problem.get_pressure());
-        tangent.setup_system();
-        AssertThrow(tangent.get_dof_handler().locally_owned_dofs() ==
-                      problem.get_dof_handler().locally_owned_dofs(),
-                    ExcInternalError("softening: its tangent numbers the DoFs differently"));
-        const StabilityMetric metric(tangent);
+        auto &workspace = problem.companion<Workspace>(
+          [&problem]() { return std::make_unique<Workspace>(problem); });
+        HyperelasticProblem &tangent = workspace.tangent;
+        const StabilityMetric &metric = *workspace.metric;
+        if (!same_positions(workspace.metric_at, design))
+          {
+            if (workspace.metric_at.size() != 0) // built at the design's X
+              workspace.metric->reassemble();
+            workspace.metric_at = copy_positions(design);
+          }
         // The element pressures p~(u) of the state, as the differences below
         // use them (Newton leaves them to its tolerance).
         Vector a_p = a;
         tangent.store_pressure(a_p);
         if (!cached)
           {
-            const auto mode =
-              lowest_eigenvalue(tangent, a_p, load_factor, 1e-12, 300, &metric.matrix());
+            // From the last design's mode where the DoFs are the same.
+            const bool same_dofs = phi.size() == a.size() &&
+                                   phi.locally_owned_elements() == a.locally_owned_elements();
+            const auto mode = lowest_eigenvalue(tangent,
+                                                a_p,
+                                                load_factor,
+                                                1e-12,
+                                                300,
+                                                &metric.matrix(),
+                                                same_dofs ? &phi : nullptr);
             AssertThrow(mode.residual < 1e-6,
                         ExcMessage("softening: the softest mode at load factor " +
                                    std::to_string(load_factor) + " did not converge in " +
@@ -177,20 +237,12 @@ namespace softopt
       bool
       is_cached(const Vector &a, const DesignConfiguration &design) const
       {
-        const auto &X = design.positions();
-        if (cached_a.size() != a.size() || cached_X.size() != X.size() ||
-            cached_a.locally_owned_elements() != a.locally_owned_elements() ||
-            cached_X.locally_owned_elements() != X.locally_owned_elements())
+        if (cached_a.size() != a.size() ||
+            cached_a.locally_owned_elements() != a.locally_owned_elements())
           return false;
         Vector difference = a;
         difference -= cached_a;
-        if (difference.linfty_norm() != 0)
-          return false;
-        Vector X_difference = design.create_vector();
-        for (const auto i : X_difference.locally_owned_elements())
-          X_difference(i) = X(i) - cached_X(i);
-        X_difference.compress(VectorOperation::insert);
-        return X_difference.linfty_norm() == 0;
+        return difference.linfty_norm() == 0 && same_positions(cached_X, design);
       }
 
       /** Keeps the mode, normalized to phi^T K_0 phi = 1. */
@@ -201,10 +253,7 @@ namespace softopt
             const StabilityMetric     &metric) const
       {
         cached_a = a;
-        cached_X = design.create_vector();
-        for (const auto i : cached_X.locally_owned_elements())
-          cached_X(i) = design.positions()(i);
-        cached_X.compress(VectorOperation::insert);
+        cached_X = copy_positions(design);
         mu            = mode.value;
         mode_residual = mode.residual;
         phi           = mode.vector;
@@ -213,7 +262,8 @@ namespace softopt
         phi /= std::sqrt(K_0_phi * phi);
       }
 
-      mutable Vector cached_a, cached_X, phi;
+      mutable Vector                      cached_a, phi;
+      mutable DesignConfiguration::Vector cached_X;
       mutable double mu = 0, mode_residual = 0;
 
       /** The diagonal of the bounding box of the mesh's vertices (a scale
