@@ -43,13 +43,24 @@ namespace softopt
       DesignConfiguration::Vector metric_at;
     };
 
+    /** Whether @p kept has the layout of @p v on every rank (a vector of
+     * another mesh may have the same size, and its owned ranges may agree
+     * on some ranks only): collective, so every rank takes the same branch. */
+    bool
+    same_layout(const PETScWrappers::MPI::Vector &kept, const PETScWrappers::MPI::Vector &v)
+    {
+      const bool here = kept.size() == v.size() &&
+                        kept.locally_owned_elements() == v.locally_owned_elements();
+      return Utilities::MPI::min(here ? 1 : 0, v.get_mpi_communicator()) == 1;
+    }
+
     /** Whether @p kept holds the design's positions X (same layout and
      * values). */
     bool
     same_positions(const DesignConfiguration::Vector &kept, const DesignConfiguration &design)
     {
       const auto &X = design.positions();
-      if (kept.size() != X.size() || kept.locally_owned_elements() != X.locally_owned_elements())
+      if (!same_layout(kept, X))
         return false;
       auto difference = design.create_vector();
       for (const auto i : difference.locally_owned_elements())
@@ -159,8 +170,7 @@ namespace softopt
         if (!cached)
           {
             // From the last design's mode where the DoFs are the same.
-            const bool same_dofs = phi.size() == a.size() &&
-                                   phi.locally_owned_elements() == a.locally_owned_elements();
+            const bool same_dofs = same_layout(phi, a);
             const auto mode = lowest_eigenvalue(tangent,
                                                 a_p,
                                                 load_factor,
@@ -237,8 +247,7 @@ namespace softopt
       bool
       is_cached(const Vector &a, const DesignConfiguration &design) const
       {
-        if (cached_a.size() != a.size() ||
-            cached_a.locally_owned_elements() != a.locally_owned_elements())
+        if (!same_layout(cached_a, a))
           return false;
         Vector difference = a;
         difference -= cached_a;
