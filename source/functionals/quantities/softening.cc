@@ -16,33 +16,6 @@ namespace softopt
 {
   namespace
   {
-    /** The set-up that does not change with the design: softening's own
-     * tangent (lowest_eigenvalue() factorizes it; the design problem's
-     * factorization is kept for its Newton steps and adjoints) and the
-     * metric's body at rest, on the same mesh, mapping and DoF numbering
-     * as the design problem; kept with it (HyperelasticProblem::companion). */
-    struct Workspace
-    {
-      explicit Workspace(const HyperelasticProblem &problem)
-        : tangent(problem.get_dof_handler().get_triangulation(),
-                  problem.get_mapping(),
-                  problem.get_geometry(),
-                  problem.get_material(),
-                  problem.get_pressure())
-      {
-        tangent.setup_system();
-        AssertThrow(tangent.get_dof_handler().locally_owned_dofs() ==
-                      problem.get_dof_handler().locally_owned_dofs(),
-                    ExcInternalError("softening: its tangent numbers the DoFs differently"));
-        metric = std::make_unique<StabilityMetric>(tangent);
-      }
-
-      HyperelasticProblem              tangent;
-      std::unique_ptr<StabilityMetric> metric;
-      /** The positions X of the design whose K_0 the metric holds. */
-      DesignConfiguration::Vector metric_at;
-    };
-
     /** Whether @p kept has the layout of @p v on every rank (a vector of
      * another mesh may have the same size, and its owned ranges may agree
      * on some ranks only): collective, so every rank takes the same branch. */
@@ -79,6 +52,34 @@ namespace softopt
       X.compress(VectorOperation::insert);
       return X;
     }
+
+    /** The set-up that does not change with the design: softening's own
+     * tangent (lowest_eigenvalue() factorizes it; the design problem's
+     * factorization is kept for its Newton steps and adjoints) and the
+     * metric's body at rest, on the same mesh, mapping and DoF numbering
+     * as the design problem; kept with it (HyperelasticProblem::companion). */
+    struct Workspace
+    {
+      Workspace(const HyperelasticProblem &problem, const DesignConfiguration &design)
+        : tangent(problem.get_dof_handler().get_triangulation(),
+                  problem.get_mapping(),
+                  problem.get_geometry(),
+                  problem.get_material(),
+                  problem.get_pressure())
+      {
+        tangent.setup_system();
+        AssertThrow(tangent.get_dof_handler().locally_owned_dofs() ==
+                      problem.get_dof_handler().locally_owned_dofs(),
+                    ExcInternalError("softening: its tangent numbers the DoFs differently"));
+        metric    = std::make_unique<StabilityMetric>(tangent);
+        metric_at = copy_positions(design);
+      }
+
+      HyperelasticProblem              tangent;
+      std::unique_ptr<StabilityMetric> metric;
+      /** The positions X of the design whose K_0 the metric holds. */
+      DesignConfiguration::Vector metric_at;
+    };
 
     /**
      * Q = 1 / mu for the smallest mu of K(a) phi = mu K_0 phi at the
@@ -154,13 +155,12 @@ namespace softopt
           return 1. / mu;
 
         auto &workspace = problem.companion<Workspace>(
-          [&problem]() { return std::make_unique<Workspace>(problem); });
+          [&]() { return std::make_unique<Workspace>(problem, design); });
         HyperelasticProblem &tangent = workspace.tangent;
         const StabilityMetric &metric = *workspace.metric;
         if (!same_positions(workspace.metric_at, design))
           {
-            if (workspace.metric_at.size() != 0) // built at the design's X
-              workspace.metric->reassemble();
+            workspace.metric->reassemble();
             workspace.metric_at = copy_positions(design);
           }
         // The element pressures p~(u) of the state, as the differences below
