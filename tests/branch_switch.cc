@@ -78,6 +78,11 @@ main(int argc, char **argv)
           << ", |V - V_rest| / V_rest " << below(std::abs(values[0] - from_rest[0]) / from_rest[0], 1e-8)
           << std::endl;
 
+  // A difference of a constraint f = Q - Tolerance counts relative to Q.
+  const auto &f = *problem.functionals()[1];
+  deallog << "constraint f = V - 1: |f + 1| / V - 1 = "
+          << below(std::abs(f.magnitude(values[1]) / values[0] - 1.), 1e-12) << std::endl;
+
   // Back on the physical branch, the next check finds the same branch.
   const auto again = problem.check_branch(x, values, 1e-3);
   deallog << "checked again: another branch: " << (again.switched ? "yes" : "no")

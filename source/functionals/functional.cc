@@ -3,6 +3,8 @@
 #include <softopt/functionals/direction_field.h>
 #include <softopt/functionals/functional.h>
 
+#include <cmath>
+
 namespace softopt
 {
   Functional::Functional(const std::string              &name,
@@ -47,6 +49,14 @@ namespace softopt
   Functional::along_load_path() const
   {
     return quantity->along_load_path();
+  }
+
+
+
+  double
+  Functional::magnitude(const double value) const
+  {
+    return std::abs(value + offset);
   }
 
 

@@ -216,16 +216,14 @@ namespace softopt
         }
       else
         {
-          ConditionalOStream quiet(std::cout, false);
-          const auto         result = path_following.run(
-            *problem,
-            parameters.newton,
-            targets,
-            [this](const PathFollowing::PathPoint &point, const Vector &) {
-              report.newton_iterations += point.newton_iterations;
-              return std::string();
-            },
-            quiet);
+          unsigned int iterations = 0;
+          const auto   result     = path_from_zero(
+            "path from zero (" +
+              (report.warm_start_failure.empty() ? std::string("no warm start") :
+                                                   "the warm start failed") +
+              ")",
+            iterations);
+          report.newton_iterations += iterations;
           AssertThrow(result.target_states.size() == targets.size(),
                       ExcMessage("The load path of this design did not reach "
                                  "every target load factor: " +
@@ -299,13 +297,8 @@ namespace softopt
   {
     TimerOutput::Scope scope(timer_output, "path from rest");
     BranchCheck        check;
-    ConditionalOStream quiet(std::cout, false);
-    const auto         result = path_following.run(
-      *problem,
-      parameters.newton,
-      targets,
-      [](const PathFollowing::PathPoint &, const Vector &) { return std::string(); },
-      quiet);
+    unsigned int       iterations = 0; // not the design's: the check's
+    const auto result = path_from_zero("path from rest (the branch check)", iterations);
     tangent_at = -1; // the path assembled other states
     std::map<double, Vector> from_rest;
     for (unsigned int i = 0; i < result.target_states.size(); ++i)
@@ -325,10 +318,14 @@ namespace softopt
         const auto &f = *functionals_[i];
         rest_values.push_back(
           f.evaluate(*problem, *design, states_at(from_rest, f.load_factors()), nullptr));
+        // Relative to the quantity, not to the constraint's distance from
+        // its tolerance: an active constraint is near 0, and a
+        // difference at Lanczos' or Newton's accuracy would count as
+        // another branch (the contractor's softening at 300-304).
         check.difference =
           std::max(check.difference,
                    std::abs(values[i] - rest_values[i]) /
-                     std::max(std::abs(rest_values[i]), 1e-12));
+                     std::max(f.magnitude(rest_values[i]), 1e-12));
       }
     if (check.difference > tolerance)
       {
@@ -631,6 +628,42 @@ namespace softopt
         failure = step_failure.what();
         return false;
       }
+  }
+
+
+
+  PathFollowing::Result
+  DesignProblem::path_from_zero(const std::string &why, unsigned int &newton_iterations)
+  {
+    ConditionalOStream log(path_log != nullptr ? *path_log : std::cout, path_log != nullptr);
+    log << path_label << ": " << why << std::endl;
+    unsigned int steps = 0;
+    newton_iterations  = 0;
+    const auto   result = path_following.run(
+      *problem,
+      parameters.newton,
+      targets,
+      [&](const PathFollowing::PathPoint &point, const Vector &) {
+        ++steps;
+        newton_iterations += point.newton_iterations;
+        log << "  step " << point.step << "  lambda " << point.load_factor
+            << "  Newton " << point.newton_iterations
+            << (point.limit_point ? "  (limit point)" : "") << std::endl;
+        return std::string();
+      },
+      log);
+    log << "  " << steps << " steps, " << newton_iterations
+        << " Newton iterations in converged steps: " << result.stop_reason << std::endl;
+    return result;
+  }
+
+
+
+  void
+  DesignProblem::log_paths(std::ostream *log, const std::string &label)
+  {
+    path_log   = log;
+    path_label = label;
   }
 
 

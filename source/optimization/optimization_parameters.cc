@@ -168,10 +168,12 @@ namespace softopt
     prm.declare_entry("Branch tolerance",
                       "1e-3",
                       Patterns::Double(0),
-                      "The largest relative difference |g_warm - g_rest| / "
-                      "|g_rest| of a functional between the warm-started "
-                      "states and those from rest that counts as the same "
-                      "branch (dimensionless).");
+                      "The largest relative difference between the "
+                      "warm-started states and those from rest that counts "
+                      "as the same branch (dimensionless): |g_warm - g_rest| "
+                      "/ |g_rest| of an objective, |f_warm - f_rest| / "
+                      "|Q_rest| of a constraint f = Q - Tolerance (an active "
+                      "constraint is near 0, its quantity is not).");
     prm.declare_entry(
       "Limit point below a target",
       "follow",

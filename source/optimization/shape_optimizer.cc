@@ -33,6 +33,13 @@ namespace softopt
 
 
 
+  ShapeOptimizer::~ShapeOptimizer()
+  {
+    problem.log_paths(nullptr, ""); // path_log closes
+  }
+
+
+
   std::string
   ShapeOptimizer::run(const bool restart)
   {
@@ -56,6 +63,10 @@ namespace softopt
           columns.emplace_back(c);
         history = std::make_unique<CsvWriter>(out.file("history.csv"), columns, comm);
       }
+    // The steps and halvings of every path from zero (paths.log): what an
+    // iteration that fell back to one spent its time on.
+    if (Utilities::MPI::this_mpi_process(comm) == 0)
+      path_log.open(out.file("paths.log"), restart ? std::ios::app : std::ios::trunc);
 
     for (; k < opt.maximum_iterations; ++k)
       {
@@ -82,6 +93,8 @@ namespace softopt
 
         Timer               timer;
         std::vector<double> values; // psi(d), X, path to every target
+        problem.log_paths(path_log.is_open() ? &path_log : nullptr,
+                          "iteration " + std::to_string(k));
         const std::string   refused =
           evaluate_or_halve(k, before_update, check_from_rest, x, values);
         if (!refused.empty())

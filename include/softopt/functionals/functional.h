@@ -56,6 +56,12 @@ namespace softopt
              const States              &states,
              Derivatives               *derivatives) const;
 
+    /** |scale Q| at a value scale Q - offset: what a difference of two
+     * values is relative to. An active constraint is near 0, its
+     * quantity is not (softening: f = Q - 10 = 3e-5 with Q = 10). */
+    double
+    magnitude(const double value) const;
+
     /** Quantity::along_load_path(). */
     bool
     along_load_path() const;

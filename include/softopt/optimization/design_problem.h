@@ -12,6 +12,7 @@
 #include <softopt/shape/shape_filter.h>
 
 #include <map>
+#include <ostream>
 #include <optional>
 #include <memory>
 #include <string>
@@ -199,6 +200,13 @@ namespace softopt
     const PathReport &
     path_report() const;
 
+    /** Every path from zero or from rest of the design loop writes its
+     * steps, halvings and switches to @p log, after a line "@p label:
+     * path from ..." (nullptr: they are silent). @p log is written by the
+     * rank that passes it; the others pass nullptr. */
+    void
+    log_paths(std::ostream *log, const std::string &label);
+
     /** Wall times of the stages (filter, path following, functionals,
      * adjoints), summed over the run. */
     TimerOutput &
@@ -243,6 +251,12 @@ namespace softopt
                       std::map<double, Vector> &states,
                       std::string              &failure);
 
+    /** Runs path following from zero to the targets, logged as
+     * log_paths() says under the heading @p why; @p newton_iterations
+     * the iterations of its converged steps. */
+    PathFollowing::Result
+    path_from_zero(const std::string &why, unsigned int &newton_iterations);
+
     /** X = X_o + psi, the nodal positions of the current design (locally
      * owned entries). */
     Vector
@@ -266,6 +280,8 @@ namespace softopt
     ShapeFilter::Result                           last_filter_result;
     TimerOutput                                   timer_output;
     PathReport                                    report;
+    std::ostream                                 *path_log = nullptr;
+    std::string                                   path_label;
     /** The tangent of the last assemble() is at the state of the last
      * evaluate() at this load factor (negative: unknown). */
     double tangent_at = -1;

@@ -11,6 +11,7 @@
 #include <softopt/optimization/design_problem.h>
 #include <softopt/optimization/optimization_parameters.h>
 
+#include <fstream>
 #include <map>
 #include <memory>
 #include <optional>
@@ -38,6 +39,9 @@ namespace softopt
                    const OutputParameters       &output,
                    DesignProblem                &problem,
                    const OutputDirectory        &out);
+
+    /** Detaches paths.log from the problem. */
+    ~ShapeOptimizer();
 
     /** The loop from the design at rest, or from the checkpoint with
      * @p restart. Returns why it stopped; failed() tells whether that was
@@ -125,6 +129,7 @@ namespace softopt
     const MPI_Comm                comm;
     ConditionalOStream            pcout;
     std::unique_ptr<CsvWriter>    history;
+    std::ofstream                 path_log; // paths.log, on rank 0
     std::map<std::string, std::unique_ptr<PvdSeries>> snapshots;
     /** The iteration this run started at (a restart's). */
     unsigned int first_iteration = 0;
