@@ -188,8 +188,10 @@ namespace softopt
         all_solved &= solved;
       }
 
-    pcout << "\nVerification (verification.csv), against the optimization mesh:"
-          << std::endl;
+    // A constraint's change relative to its quantity Q, not to f = Q -
+    // Tolerance (near 0 when active).
+    pcout << "\nVerification (verification.csv), against the optimization mesh"
+          << " (a constraint f = Q - Tolerance relative to Q):" << std::endl;
     for (unsigned int i = 0; i < columns.size() - 3; ++i)
       {
         pcout << "  " << columns[i + 3] << ": " << std::setprecision(6)
@@ -202,7 +204,8 @@ namespace softopt
               pcout << "target not reached)";
             else
               pcout << std::showpos << std::setprecision(2) << std::fixed
-                    << 100 * (v - first.values[i]) / std::abs(first.values[i])
+                    << 100 * (v - first.values[i]) /
+                         settings.functionals[i]->magnitude(first.values[i])
                     << std::noshowpos << std::defaultfloat << std::setprecision(6)
                     << " %)";
           }
