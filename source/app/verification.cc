@@ -202,12 +202,13 @@ namespace softopt
             pcout << ", " << v << " (" << rows[r].mesh_size_mm << " mm, ";
             if (std::isnan(v))
               pcout << "target not reached)";
+            else if (const double Q = settings.functionals[i]->magnitude(first.values[i]);
+                     Q == 0) // thin walls with every wall thick enough
+              pcout << std::showpos << v - first.values[i] << std::noshowpos << ")";
             else
               pcout << std::showpos << std::setprecision(2) << std::fixed
-                    << 100 * (v - first.values[i]) /
-                         settings.functionals[i]->magnitude(first.values[i])
-                    << std::noshowpos << std::defaultfloat << std::setprecision(6)
-                    << " %)";
+                    << 100 * (v - first.values[i]) / Q << std::noshowpos
+                    << std::defaultfloat << std::setprecision(6) << " %)";
           }
         pcout << std::endl;
       }

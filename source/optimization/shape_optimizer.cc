@@ -35,7 +35,7 @@ namespace softopt
 
   ShapeOptimizer::~ShapeOptimizer()
   {
-    problem.log_paths(nullptr, ""); // path_log closes
+    problem.log_paths(nullptr, ""); // before path_log is destroyed
   }
 
 
@@ -66,7 +66,11 @@ namespace softopt
     // The steps and halvings of every path from zero (paths.log): what an
     // iteration that fell back to one spent its time on.
     if (Utilities::MPI::this_mpi_process(comm) == 0)
-      path_log.open(out.file("paths.log"), restart ? std::ios::app : std::ios::trunc);
+      {
+        path_log.open(out.file("paths.log"), restart ? std::ios::app : std::ios::trunc);
+        if (restart) // the iterations from k on above are the interrupted run's
+          path_log << "restart at iteration " << k << " from the checkpoint" << std::endl;
+      }
 
     for (; k < opt.maximum_iterations; ++k)
       {
