@@ -58,7 +58,7 @@ namespace softopt
 
     /** |scale Q| at a value scale Q - offset: what a difference of two
      * values is relative to. An active constraint is near 0, its
-     * quantity is not (softening: f = Q - 10 = 3e-5 with Q = 10). */
+     * quantity is not (softening: f = Q - 10 = 3e-5 with Q = 10.00003). */
     double
     magnitude(const double value) const;
 
