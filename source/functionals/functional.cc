@@ -129,7 +129,10 @@ namespace softopt
                         "The bound of the constraint f_j = Q - Tolerance <= 0, "
                         "in the unit of Q: epsilon_u of Eq. constraint in mm^2 "
                         "for the squared displacement (its mean over the design "
-                        "surface must stay below it).");
+                        "surface must stay below it). The optimizer sees f_j / "
+                        "Tolerance, the violation relative to the bound, so a "
+                        "bound of 1e-4 is held as firmly as one of 10 "
+                        "(Tolerance 0: f_j as it is).");
       declare_common(prm, "squared displacement");
     }
   } // namespace
