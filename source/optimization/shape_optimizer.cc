@@ -391,8 +391,9 @@ namespace softopt
       if (is_objective(i))
         shift = std::max(shift, 1 + 2 * std::abs(values[i]));
     // A constraint f = Q - Tolerance enters as f / |Tolerance| = Q /
-    // |Tolerance| - 1: its relative violation. Its elastic variable then
-    // costs c_i per tolerance exceeded, whatever the unit of Q; unscaled,
+    // |Tolerance| - 1 (magnitude(0) = |Tolerance|): its relative
+    // violation. Its elastic variable then costs c_i for a violation the
+    // size of the tolerance, whatever the unit of Q; unscaled,
     // thin walls (Tolerance 1e-4) cost 1000 * 4.8e-4 = 0.5 at Q = 5.8e-4,
     // less than the objective gained, and MMA's regularization (raa0)
     // outweighed its gradients.
