@@ -9,6 +9,7 @@
 
 #include <petscpc.h>
 
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
@@ -65,6 +66,29 @@ namespace softopt
                   << ordering_name(used) << " instead." << std::endl;
       warned = true;
     }
+
+
+
+    /**
+     * Says once per run where MUMPS writes its factors when "Out-of-core
+     * factors" asks for it, read back from the factor @p F (ICNTL(22)), so
+     * the log shows that the option reached MUMPS.
+     */
+    void
+    report_out_of_core(const Mat F, const MPI_Comm comm)
+    {
+      static bool reported = false;
+      PetscInt    ooc      = 0;
+      check_petsc(MatMumpsGetIcntl(F, 22, &ooc), "MatMumpsGetIcntl");
+      if (reported || ooc == 0)
+        return;
+      const char *directory = std::getenv("MUMPS_OOC_TMPDIR");
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        std::cout << "MUMPS writes its factors out of core, to "
+                  << (directory != nullptr ? directory : "/tmp")
+                  << " (MUMPS_OOC_TMPDIR)." << std::endl;
+      reported = true;
+    }
   } // namespace
 
 
@@ -97,6 +121,16 @@ namespace softopt
       "on large meshes (doc/benchmarks.md says where each wins). Arclength "
       "steps always factorize (they need the sign of det K); adjoint solves "
       "always use GMRES on the kept factorization.");
+    prm.declare_entry("Out-of-core factors",
+                      "false",
+                      Patterns::Bool(),
+                      "MUMPS keeps the factors on disk instead of in memory "
+                      "(ICNTL(22) = 1), in the directory of the environment "
+                      "variable MUMPS_OOC_TMPDIR (default /tmp), and removes "
+                      "them at the end. For meshes whose factors do not fit "
+                      "in memory, e.g. a verification at 0.8 mm: on the 1.2 mm "
+                      "actuator the peak memory fell from 1.16 to 0.73 GB at "
+                      "the same speed (doc/benchmarks.md).");
     prm.declare_entry("GMRES tolerance",
                       "1e-6",
                       Patterns::Double(1e-14, 1e-1),
@@ -120,7 +154,8 @@ namespace softopt
   DirectSolver::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    const std::string ordering = prm.get("MUMPS ordering");
+    const std::string ordering    = prm.get("MUMPS ordering");
+    const bool        out_of_core = prm.get_bool("Out-of-core factors");
     Parameters        parameters;
     parameters.keep_factorization = prm.get("Newton steps") == "kept factorization";
     parameters.tolerance          = prm.get_double("GMRES tolerance");
@@ -132,6 +167,9 @@ namespace softopt
                                                "7";
     check_petsc(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_7", icntl7),
                 "PetscOptionsSetValue");
+    if (out_of_core)
+      check_petsc(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_22", "1"),
+                  "PetscOptionsSetValue");
     return parameters;
   }
 
@@ -199,7 +237,10 @@ namespace softopt
     check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
     check_petsc(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
     if (factorizations == 1)
-      warn_if_ordering_replaced(F, comm);
+      {
+        warn_if_ordering_replaced(F, comm);
+        report_out_of_core(F, comm);
+      }
     PetscInt info = 0, info2 = 0;
     check_petsc(MatMumpsGetInfog(F, 1, &info), "MatMumpsGetInfog");
     check_petsc(MatMumpsGetInfog(F, 2, &info2), "MatMumpsGetInfog");

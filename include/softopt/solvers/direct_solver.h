@@ -45,9 +45,9 @@ namespace softopt
       unsigned int max_iterations = 20;
     };
 
-    /** Reads the subsection; sets the ordering for every factorization of
-     * the run (through PETSc's options database, which MUMPS reads at its
-     * analysis). */
+    /** Reads the subsection; sets the ordering, and whether the factors
+     * go out of core, for every factorization of the run (through PETSc's
+     * options database, which MUMPS reads at its analysis). */
     static Parameters
     parse_parameters(ParameterHandler &prm);
 
