@@ -112,13 +112,15 @@ namespace softopt
           else if (start == Start::restart && fs::exists(out.file("parameters.prm"), code))
             {
               // What may change: how far to run, how often to save and
-              // write, what to print, and the final analysis's steps.
+              // write, what to print, the final analysis's steps, and
+              // where MUMPS keeps its factors.
               const auto differences = parameter_differences(
                 out.file("parameters.prm"),
                 settings.prm,
                 {"Command", "Output directory", "Print timings", "Output/*", "Verification/*",
                  "Optimization/Maximum iterations", "Optimization/Checkpoint interval",
-                 "Optimization/Output interval", "Optimization/Final analysis steps"});
+                 "Optimization/Output interval", "Optimization/Final analysis steps",
+                 "Linear solver/Out-of-core factors"});
               if (!differences.empty())
                 {
                   error = file + ": --restart continues the run in <" + out.path() +

@@ -233,16 +233,17 @@ namespace softopt
                            settings.input->path() + ") has no design.msh: run "
                            "\"softopt optimize " + settings.input->path() +
                            "\" first."));
-    // The same problem as the run's: only what says how to optimize, what
-    // to write and how to verify may differ.
+    // The same problem as the run's: only what says how to optimize, how
+    // to solve (e.g. out-of-core factors for a fine mesh), what to write
+    // and how to verify may differ.
     if (std::filesystem::exists(directory + "/parameters.prm"))
       {
         const auto differences = parameter_differences(
           directory + "/parameters.prm",
           settings.prm,
           {"Command", "Output directory", "Print timings", "Output/*", "Optimization/*",
-           "Shape filter/*", "Verification/*", "Geometry/Mesh file", "Geometry/Mesh size",
-           "Geometry/Mesh parameters"});
+           "Shape filter/*", "Verification/*", "Linear solver/*", "Geometry/Mesh file",
+           "Geometry/Mesh size", "Geometry/Mesh parameters"});
         if (!differences.empty())
           {
             std::string error = settings.input->path() + ": \"verify\" analyzes the "
