@@ -127,7 +127,8 @@ namespace softopt
                       "MUMPS keeps the factors on disk instead of in memory "
                       "(ICNTL(22) = 1), in the directory of the environment "
                       "variable MUMPS_OOC_TMPDIR (default /tmp), and removes "
-                      "them at the end. For meshes whose factors do not fit "
+                      "them at the end (a killed run leaves its mumps_* files "
+                      "there). For meshes whose factors do not fit "
                       "in memory, e.g. a verification at 0.8 mm: on the 1.2 mm "
                       "actuator the peak memory fell from 1.16 to 0.73 GB at "
                       "the same speed (doc/benchmarks.md).");
