@@ -43,51 +43,41 @@ namespace softopt
 
 
     /**
-     * Says once per run if MUMPS used another ordering than the one of
-     * "MUMPS ordering" for the factor @p F: it falls back to its default,
-     * silently, when it was built without the one asked for (Debian's MUMPS
-     * has neither METIS nor SCOTCH).
+     * Says once per run, from the first factor @p F, what MUMPS did with
+     * the subsection's settings: if it used another ordering than "MUMPS
+     * ordering" (it falls back to its default, silently, when it was built
+     * without the one asked for; Debian's MUMPS has neither METIS nor
+     * SCOTCH), and where it writes the factors when "Out-of-core factors"
+     * asks for it (ICNTL(22) read back, so the log shows that the option
+     * reached MUMPS).
      */
     void
-    warn_if_ordering_replaced(const Mat F, const MPI_Comm comm)
+    report_mumps_settings(const Mat F, const MPI_Comm comm)
     {
-      static bool warned    = false;
-      PetscInt    requested = 7;
-      PetscBool   set       = PETSC_FALSE;
+      static bool reported = false;
+      if (reported)
+        return;
+      reported        = true;
+      const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+
+      PetscInt  requested = 7;
+      PetscBool set       = PETSC_FALSE;
       check_petsc(PetscOptionsGetInt(nullptr, nullptr, "-mat_mumps_icntl_7", &requested, &set),
                   "PetscOptionsGetInt");
-      if (warned || !set || requested == 7)
-        return;
       PetscInt used = requested;
       check_petsc(MatMumpsGetInfog(F, 7, &used), "MatMumpsGetInfog");
-      if (used != requested && Utilities::MPI::this_mpi_process(comm) == 0)
+      if (root && set && requested != 7 && used != requested)
         std::cout << "Warning: subsection \"Linear solver\", \"MUMPS ordering\": this "
                   << "MUMPS cannot use " << ordering_name(requested) << " and uses "
                   << ordering_name(used) << " instead." << std::endl;
-      warned = true;
-    }
 
-
-
-    /**
-     * Says once per run where MUMPS writes its factors when "Out-of-core
-     * factors" asks for it, read back from the factor @p F (ICNTL(22)), so
-     * the log shows that the option reached MUMPS.
-     */
-    void
-    report_out_of_core(const Mat F, const MPI_Comm comm)
-    {
-      static bool reported = false;
-      PetscInt    ooc      = 0;
-      check_petsc(MatMumpsGetIcntl(F, 22, &ooc), "MatMumpsGetIcntl");
-      if (reported || ooc == 0)
-        return;
+      PetscInt out_of_core = 0;
+      check_petsc(MatMumpsGetIcntl(F, 22, &out_of_core), "MatMumpsGetIcntl");
       const char *directory = std::getenv("MUMPS_OOC_TMPDIR");
-      if (Utilities::MPI::this_mpi_process(comm) == 0)
+      if (root && out_of_core != 0)
         std::cout << "MUMPS writes its factors out of core, to "
                   << (directory != nullptr ? directory : "/tmp")
                   << " (MUMPS_OOC_TMPDIR)." << std::endl;
-      reported = true;
     }
   } // namespace
 
@@ -238,10 +228,7 @@ namespace softopt
     check_petsc(KSPGetPC(ksp, &pc), "KSPGetPC");
     check_petsc(PCFactorGetMatrix(pc, &F), "PCFactorGetMatrix");
     if (factorizations == 1)
-      {
-        warn_if_ordering_replaced(F, comm);
-        report_out_of_core(F, comm);
-      }
+      report_mumps_settings(F, comm);
     PetscInt info = 0, info2 = 0;
     check_petsc(MatMumpsGetInfog(F, 1, &info), "MatMumpsGetInfog");
     check_petsc(MatMumpsGetInfog(F, 2, &info2), "MatMumpsGetInfog");
