@@ -9,11 +9,15 @@
 #include <softopt/optimization/design_problem.h>
 #include <softopt/shape/remesh.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <iomanip>
 #include <map>
 #include <sstream>
+#include <tuple>
 
 namespace softopt
 {
@@ -135,6 +139,51 @@ namespace softopt
       row.dofs         = body.problem->get_dof_handler().n_dofs();
       row.values = values_at_targets(*body.problem, *body.design, functionals, result);
       return {row, !result.failed};
+    }
+
+    /** Each functional's value at its targets from a finished final
+     * analysis, @p summary (its load_path_summary.csv, written when the
+     * path ends); empty if there is none, it is older than @p parameters
+     * (the run's parameters.prm, edited since), it names other functionals
+     * or other target pressures than @p pressure_kPa gives, or a target
+     * was not reached. */
+    std::vector<double>
+    values_of_final_analysis(const std::string                     &summary,
+                             const std::string                     &parameters,
+                             const std::vector<const Functional *> &functionals,
+                             const double                           pressure_kPa)
+    {
+      std::error_code error;
+      const auto      written = std::filesystem::last_write_time(summary, error);
+      if (error || written < std::filesystem::last_write_time(parameters, error) || error)
+        return {};
+      std::ifstream in(summary);
+      std::string   line;
+      if (!std::getline(in, line))
+        return {};
+      const auto header = Utilities::split_string_list(line, ',');
+      const auto name   = std::find(header.begin(), header.end(), "functional");
+      const auto value  = std::find(header.begin(), header.end(), "value_at_target");
+      const auto target = std::find(header.begin(), header.end(), "target_pressure_kPa");
+      if (name == header.end() || value == header.end() || target == header.end())
+        return {};
+      std::vector<double> values;
+      for (const auto *f : functionals)
+        {
+          if (!std::getline(in, line))
+            return {};
+          const auto fields = Utilities::split_string_list(line, ',');
+          if (fields.size() != header.size() || fields[name - header.begin()] != f->name())
+            return {};
+          const double p = std::strtod(fields[target - header.begin()].c_str(), nullptr);
+          if (!f->load_factors().empty() &&
+              !(std::abs(p - f->load_factors().back() * pressure_kPa) <= 1e-9 * pressure_kPa))
+            return {};
+          values.push_back(std::strtod(fields[value - header.begin()].c_str(), nullptr));
+          if (!std::isfinite(values.back()))
+            return {};
+        }
+      return values;
     }
 
     std::vector<std::string>
@@ -261,9 +310,29 @@ namespace softopt
           << design.triangulation->n_global_active_cells() << " tetrahedra, "
           << design.problem->get_dof_handler().n_dofs()
           << " degrees of freedom):" << std::endl;
-    const auto [first, solved] =
-      analyze(settings, design, optimization_mesh_size(settings, *design.design),
-              out.file("verification/design_mesh"), pcout);
+    // The optimization mesh's row is the run's final analysis of this
+    // design (from rest, like every row), unless it did not finish.
+    const double size = optimization_mesh_size(settings, *design.design);
+    const std::string summary = directory + "/final_analysis/load_path_summary.csv";
+    VerificationRow   first{size,
+                          design.triangulation->n_global_active_cells(),
+                          design.problem->get_dof_handler().n_dofs(),
+                          Utilities::MPI::broadcast(
+                            comm,
+                            Utilities::MPI::this_mpi_process(comm) == 0 ?
+                              values_of_final_analysis(summary,
+                                                       directory + "/parameters.prm",
+                                                       functionals_of(settings),
+                                                       settings.loading.pressure_kPa) :
+                              std::vector<double>(),
+                            0)};
+    bool solved = true;
+    if (!first.values.empty())
+      pcout << "  its values at the targets from the run's final analysis ("
+            << summary << ")" << std::endl;
+    else
+      std::tie(first, solved) =
+        analyze(settings, design, size, out.file("verification/design_mesh"), pcout);
     const bool fine_solved = verify_design(settings, design_mesh, first, out, pcout);
     return solved && fine_solved ? 0 : 1;
   }

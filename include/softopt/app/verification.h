@@ -58,8 +58,10 @@ namespace softopt
 
   /**
    * "softopt verify CASE.prm": verify_design() for the finished run in the
-   * case's output directory, without optimizing again; the first row is an
-   * analysis of its design.msh. Returns the exit code.
+   * case's output directory, without optimizing again. The first row is
+   * the run's final analysis of its design (final_analysis/
+   * load_path_summary.csv), or an analysis of its design.msh if that did
+   * not finish. Returns the exit code.
    */
   int
   run_verification(const Settings &settings, const MPI_Comm comm);
