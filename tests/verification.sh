@@ -80,6 +80,15 @@ if cmp -s first_verification.csv moved/verification.csv && ! grep -q "from the r
 else
   fail "verify without a final analysis:"; diff first_verification.csv moved/verification.csv
 fi
+# Nor after parameters.prm was edited: the final analysis may be another
+# problem's.
+sleep 1; touch moved/parameters.prm
+"$softopt" verify moved.prm > verify3.log 2>&1 || { echo "FAIL verify after parameters.prm"; cat verify3.log; exit 1; }
+if cmp -s first_verification.csv moved/verification.csv && ! grep -q "from the run's final analysis" verify3.log; then
+  echo "ok   with parameters.prm newer than the final analysis, verify analyzes design.msh"
+else
+  fail "verify after parameters.prm was edited:"; diff first_verification.csv moved/verification.csv
+fi
 # A linear-solver entry may differ from the run's: out-of-core factors (for
 # fine verification meshes) give the same values.
 { case_file moved 3 "0.2"; printf 'subsection Linear solver\n  set Out-of-core factors = true\nend\n'; } > ooc.prm

@@ -144,14 +144,12 @@ namespace softopt
     /** Each functional's value at its targets from a finished final
      * analysis, @p summary (its load_path_summary.csv, written when the
      * path ends); empty if there is none, it is older than @p parameters
-     * (the run's parameters.prm, edited since), it names other functionals
-     * or other target pressures than @p pressure_kPa gives, or a target
-     * was not reached. */
+     * (the run's parameters.prm, edited since), it names other functionals,
+     * or a target was not reached. */
     std::vector<double>
     values_of_final_analysis(const std::string                     &summary,
                              const std::string                     &parameters,
-                             const std::vector<const Functional *> &functionals,
-                             const double                           pressure_kPa)
+                             const std::vector<const Functional *> &functionals)
     {
       std::error_code error;
       const auto      written = std::filesystem::last_write_time(summary, error);
@@ -164,8 +162,7 @@ namespace softopt
       const auto header = Utilities::split_string_list(line, ',');
       const auto name   = std::find(header.begin(), header.end(), "functional");
       const auto value  = std::find(header.begin(), header.end(), "value_at_target");
-      const auto target = std::find(header.begin(), header.end(), "target_pressure_kPa");
-      if (name == header.end() || value == header.end() || target == header.end())
+      if (name == header.end() || value == header.end())
         return {};
       std::vector<double> values;
       for (const auto *f : functionals)
@@ -174,10 +171,6 @@ namespace softopt
             return {};
           const auto fields = Utilities::split_string_list(line, ',');
           if (fields.size() != header.size() || fields[name - header.begin()] != f->name())
-            return {};
-          const double p = std::strtod(fields[target - header.begin()].c_str(), nullptr);
-          if (!f->load_factors().empty() &&
-              !(std::abs(p - f->load_factors().back() * pressure_kPa) <= 1e-9 * pressure_kPa))
             return {};
           values.push_back(std::strtod(fields[value - header.begin()].c_str(), nullptr));
           if (!std::isfinite(values.back()))
@@ -322,8 +315,7 @@ namespace softopt
                             Utilities::MPI::this_mpi_process(comm) == 0 ?
                               values_of_final_analysis(summary,
                                                        directory + "/parameters.prm",
-                                                       functionals_of(settings),
-                                                       settings.loading.pressure_kPa) :
+                                                       functionals_of(settings)) :
                               std::vector<double>(),
                             0)};
     bool solved = true;
