@@ -80,6 +80,21 @@ if cmp -s first_verification.csv moved/verification.csv && ! grep -q "from the r
 else
   fail "verify without a final analysis:"; diff first_verification.csv moved/verification.csv
 fi
+# Nor when the summary names another functional, or a value is not a
+# number (a target not reached); its time kept, so only its content differs.
+summary=moved/final_analysis/load_path_summary.csv
+cp -p "$summary" summary.csv
+for edit in 's/^g_1,/f_1,/' 's/^\(g_1,[^,]*,[^,]*,\)[^,]*/\1nan/'; do
+  sed "$edit" summary.csv > "$summary"; touch -r summary.csv "$summary"
+  cmp -s summary.csv "$summary" && fail "the edit $edit did not change the summary"
+  "$softopt" verify moved.prm > verify_edited.log 2>&1 || { echo "FAIL verify with an edited summary"; cat verify_edited.log; exit 1; }
+  if cmp -s first_verification.csv moved/verification.csv && ! grep -q "from the run's final analysis" verify_edited.log; then
+    echo "ok   with the summary edited ($edit), verify analyzes design.msh"
+  else
+    fail "verify with the summary edited ($edit):"; diff first_verification.csv moved/verification.csv
+  fi
+done
+cp -p summary.csv "$summary"
 # Nor after parameters.prm was edited: the final analysis may be another
 # problem's.
 sleep 1; touch moved/parameters.prm

@@ -143,18 +143,23 @@ namespace softopt
 
     /** Each functional's value at its targets from a finished final
      * analysis, @p summary (its load_path_summary.csv, written when the
-     * path ends); empty if there is none, it is older than @p parameters
-     * (the run's parameters.prm, edited since), it names other functionals,
-     * or a target was not reached. */
+     * path ends); empty if there is none, it is not newer than each of
+     * @p inputs (the run's parameters.prm and design.msh: edited or
+     * replaced since), it lists functionals of another count or kind
+     * (their names are positional: g_1, f_1, ...), or a value is not a
+     * finite number (a target was not reached). */
     std::vector<double>
     values_of_final_analysis(const std::string                     &summary,
-                             const std::string                     &parameters,
+                             const std::vector<std::string>        &inputs,
                              const std::vector<const Functional *> &functionals)
     {
       std::error_code error;
       const auto      written = std::filesystem::last_write_time(summary, error);
-      if (error || written < std::filesystem::last_write_time(parameters, error) || error)
+      if (error)
         return {};
+      for (const auto &input : inputs)
+        if (!(written > std::filesystem::last_write_time(input, error)) || error)
+          return {};
       std::ifstream in(summary);
       std::string   line;
       if (!std::getline(in, line))
@@ -172,10 +177,16 @@ namespace softopt
           const auto fields = Utilities::split_string_list(line, ',');
           if (fields.size() != header.size() || fields[name - header.begin()] != f->name())
             return {};
-          values.push_back(std::strtod(fields[value - header.begin()].c_str(), nullptr));
-          if (!std::isfinite(values.back()))
+          const std::string &field = fields[value - header.begin()];
+          char              *end   = nullptr;
+          values.push_back(std::strtod(field.c_str(), &end));
+          if (field.empty() || end != field.c_str() + field.size() ||
+              !std::isfinite(values.back()))
             return {};
         }
+      while (std::getline(in, line)) // no rows of other functionals
+        if (line.find_first_not_of(" \r\t") != std::string::npos)
+          return {};
       return values;
     }
 
@@ -304,7 +315,8 @@ namespace softopt
           << design.problem->get_dof_handler().n_dofs()
           << " degrees of freedom):" << std::endl;
     // The optimization mesh's row is the run's final analysis of this
-    // design (from rest, like every row), unless it did not finish.
+    // design (from rest, like every row), unless it did not reach every
+    // target or is older than the parameters or the design (see above).
     const double size = optimization_mesh_size(settings, *design.design);
     const std::string summary = directory + "/final_analysis/load_path_summary.csv";
     VerificationRow   first{size,
@@ -314,7 +326,8 @@ namespace softopt
                             comm,
                             Utilities::MPI::this_mpi_process(comm) == 0 ?
                               values_of_final_analysis(summary,
-                                                       directory + "/parameters.prm",
+                                                       {directory + "/parameters.prm",
+                                                        design_mesh},
                                                        functionals_of(settings)) :
                               std::vector<double>(),
                             0)};
