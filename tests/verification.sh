@@ -95,6 +95,19 @@ for edit in 's/^g_1,/f_1,/' 's/^\(g_1,[^,]*,[^,]*,\)[^,]*/\1nan/'; do
   fi
 done
 cp -p summary.csv "$summary"
+# Nor when the path failed after the last target (optimize exits 1 then;
+# verify must not read the failure as a success): its stop reason edited,
+# the time kept.
+stop=moved/final_analysis/stop_reason.txt
+cp -p "$stop" stop_reason.txt
+echo "the load step could not be solved above load factor 1" > "$stop"; touch -r stop_reason.txt "$stop"
+"$softopt" verify moved.prm > verify_failed.log 2>&1 || { echo "FAIL verify after a failed final analysis"; cat verify_failed.log; exit 1; }
+cp -p stop_reason.txt "$stop"
+if cmp -s first_verification.csv moved/verification.csv && ! grep -q "from the run's final analysis" verify_failed.log; then
+  echo "ok   with the final analysis's stop reason a failure, verify analyzes design.msh"
+else
+  fail "verify with a failed final analysis:"; diff first_verification.csv moved/verification.csv
+fi
 # Nor after parameters.prm was edited: the final analysis may be another
 # problem's.
 sleep 1; touch moved/parameters.prm
@@ -105,22 +118,26 @@ else
   fail "verify after parameters.prm was edited:"; diff first_verification.csv moved/verification.csv
 fi
 # A linear-solver entry may differ from the run's: out-of-core factors (for
-# fine verification meshes) give the same values.
-{ case_file moved 3 "0.2"; printf 'subsection Linear solver\n  set Out-of-core factors = true\nend\n'; } > ooc.prm
+# fine verification meshes) give the same values, set for every
+# factorization (Linear solver) or for the verification meshes only
+# (Verification).
 cp moved/verification.csv in_core_verification.csv
-if ! "$softopt" verify ooc.prm > ooc.log 2>&1 || ! grep -q "factors out of core" ooc.log; then
-  fail "verify with out-of-core factors"; cat ooc.log
-else
-  /usr/bin/python3 - in_core_verification.csv moved/verification.csv <<'PY' || failures=$((failures + 1))
+for subsection in "Linear solver" "Verification"; do
+  { case_file moved 3 "0.2"; printf 'subsection %s\n  set Out-of-core factors = true\nend\n' "$subsection"; } > ooc.prm
+  if ! "$softopt" verify ooc.prm > ooc.log 2>&1 || ! grep -q "factors out of core" ooc.log; then
+    fail "verify with out-of-core factors ($subsection)"; cat ooc.log
+  else
+    /usr/bin/python3 - in_core_verification.csv moved/verification.csv "$subsection" <<'PY' || failures=$((failures + 1))
 import csv, sys
 a, b = (list(csv.DictReader(open(f))) for f in sys.argv[1:3])
 d = max(abs(float(y[k]) - float(x[k])) / max(abs(float(x[k])), 1e-300)
         for x, y in zip(a, b) for k in x if k not in ("cells", "dofs") and float(x[k]) != 0)
 ok = len(a) == len(b) and d < 1e-8
-print(("ok  " if ok else "FAIL") + " verify with out-of-core factors: %d rows, largest relative difference %.0e (< 1e-8)" % (len(b) - 1, d))
+print(("ok  " if ok else "FAIL") + " verify with out-of-core factors (%s): %d rows, largest relative difference %.0e (< 1e-8)" % (sys.argv[3], len(b) - 1, d))
 sys.exit(0 if ok else 1)
 PY
-fi
+  fi
+done
 case_file moved 3 "" > empty.prm
 if "$softopt" verify empty.prm > empty.log 2>&1 || ! grep -q '"Mesh sizes" is empty' empty.log; then
   fail "verify without mesh sizes"; cat empty.log

@@ -8,6 +8,7 @@
 #include <softopt/io/parameter_differences.h>
 #include <softopt/optimization/design_problem.h>
 #include <softopt/shape/remesh.h>
+#include <softopt/solvers/direct_solver.h>
 
 #include <algorithm>
 #include <cmath>
@@ -36,6 +37,16 @@ namespace softopt
       "verification.csv then gives each functional on the optimization "
       "mesh and on each finer mesh, so you see how far the run's values "
       "can be trusted. Each size costs one analysis on that mesh.");
+    prm.declare_entry(
+      "Out-of-core factors",
+      "false",
+      Patterns::Bool(),
+      "The verification meshes' factors on disk, as subsection \"Linear "
+      "solver\"'s entry of that name does for every factorization: for "
+      "meshes whose factors do not fit in memory (at 0.8 mm about 205,000 "
+      "tetrahedra, over 24 GB in memory on one rank), while the "
+      "optimization's stay in memory (on disk they made a 2 mm design "
+      "iteration about twice as slow; doc/benchmarks.md).");
     prm.leave_subsection();
   }
 
@@ -45,7 +56,8 @@ namespace softopt
   VerificationParameters::parse_parameters(ParameterHandler &prm, const InputFile &input)
   {
     prm.enter_subsection("Verification");
-    mesh_sizes = parse_doubles(prm.get("Mesh sizes"), input.where("Verification", "Mesh sizes"));
+    mesh_sizes  = parse_doubles(prm.get("Mesh sizes"), input.where("Verification", "Mesh sizes"));
+    out_of_core = prm.get_bool("Out-of-core factors");
     prm.leave_subsection();
   }
 
@@ -145,9 +157,11 @@ namespace softopt
      * analysis, @p summary (its load_path_summary.csv, written when the
      * path ends); empty if there is none, it is not newer than each of
      * @p inputs (the run's parameters.prm and design.msh: edited or
-     * replaced since), it lists functionals of another count or kind
-     * (their names are positional: g_1, f_1, ...), or a value is not a
-     * finite number (a target was not reached). */
+     * replaced since), the path did not end at its last load factor (the
+     * stop_reason.txt beside it: a failure after the last target makes
+     * optimize exit 1, and so must verify), it lists functionals of
+     * another count or kind (their names are positional: g_1, f_1, ...),
+     * or a value is not a finite number (a target was not reached). */
     std::vector<double>
     values_of_final_analysis(const std::string                     &summary,
                              const std::vector<std::string>        &inputs,
@@ -160,8 +174,13 @@ namespace softopt
       for (const auto &input : inputs)
         if (!(written > std::filesystem::last_write_time(input, error)) || error)
           return {};
+      std::string line;
+      {
+        std::ifstream stop(std::filesystem::path(summary).replace_filename("stop_reason.txt"));
+        if (!std::getline(stop, line) || line != PathFollowing::reached_last_target)
+          return {};
+      }
       std::ifstream in(summary);
-      std::string   line;
       if (!std::getline(in, line))
         return {};
       const auto header = Utilities::split_string_list(line, ',');
@@ -221,6 +240,8 @@ namespace softopt
     bool                         all_solved = true;
 
     const AnalysisBody design(settings, comm, design_mesh);
+    if (settings.verification.out_of_core)
+      DirectSolver::set_out_of_core(true);
     for (const double h : settings.verification.mesh_sizes)
       {
         const std::string name = size_name(h);
@@ -240,6 +261,7 @@ namespace softopt
         rows.push_back(row);
         all_solved &= solved;
       }
+    DirectSolver::set_out_of_core(settings.linear_solver.out_of_core);
 
     // A constraint's change relative to its quantity Q, not to f = Q -
     // Tolerance (near 0 when active).
@@ -315,8 +337,9 @@ namespace softopt
           << design.problem->get_dof_handler().n_dofs()
           << " degrees of freedom):" << std::endl;
     // The optimization mesh's row is the run's final analysis of this
-    // design (from rest, like every row), unless it did not reach every
-    // target or is older than the parameters or the design (see above).
+    // design (from rest, like every row), unless it did not reach the end
+    // of its path or is older than the parameters or the design (see
+    // above).
     const double size = optimization_mesh_size(settings, *design.design);
     const std::string summary = directory + "/final_analysis/load_path_summary.csv";
     VerificationRow   first{size,

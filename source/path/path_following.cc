@@ -387,7 +387,7 @@ namespace softopt
           }
         if (result.stop_reason.empty() && lands &&
             ++next_target == targets.size())
-          result.stop_reason = "reached the last target load factor";
+          result.stop_reason = reached_last_target;
       }
     return result;
   }

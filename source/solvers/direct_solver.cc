@@ -43,22 +43,33 @@ namespace softopt
 
 
     /**
-     * Says once per run, from the first factor @p F, what MUMPS did with
-     * the subsection's settings: if it used another ordering than "MUMPS
+     * Says what MUMPS did with the subsection's settings, from the factor
+     * @p F: once per run, if it used another ordering than "MUMPS
      * ordering" (it falls back to its default, silently, when it was built
      * without the one asked for; Debian's MUMPS has neither METIS nor
-     * SCOTCH), and where it writes the factors when "Out-of-core factors"
-     * asks for it (ICNTL(22) read back, so the log shows that the option
-     * reached MUMPS).
+     * SCOTCH), and where it writes the factors whenever they go out of
+     * core after being in memory ("Out-of-core factors" of subsection
+     * Linear solver or Verification; ICNTL(22) read back, so the log shows
+     * that the option reached MUMPS).
      */
     void
     report_mumps_settings(const Mat F, const MPI_Comm comm)
     {
+      const bool  root = Utilities::MPI::this_mpi_process(comm) == 0;
+      static bool out_of_core_reported = false;
+      PetscInt    out_of_core          = 0;
+      check_petsc(MatMumpsGetIcntl(F, 22, &out_of_core), "MatMumpsGetIcntl");
+      const char *directory = std::getenv("MUMPS_OOC_TMPDIR");
+      if (root && out_of_core != 0 && !out_of_core_reported)
+        std::cout << "MUMPS writes its factors out of core, to "
+                  << (directory != nullptr ? directory : "/tmp")
+                  << " (MUMPS_OOC_TMPDIR)." << std::endl;
+      out_of_core_reported = out_of_core != 0;
+
       static bool reported = false;
       if (reported)
         return;
-      reported        = true;
-      const bool root = Utilities::MPI::this_mpi_process(comm) == 0;
+      reported = true;
 
       PetscInt  requested = 7;
       PetscBool set       = PETSC_FALSE;
@@ -70,14 +81,6 @@ namespace softopt
         std::cout << "Warning: subsection \"Linear solver\", \"MUMPS ordering\": this "
                   << "MUMPS cannot use " << ordering_name(requested) << " and uses "
                   << ordering_name(used) << " instead." << std::endl;
-
-      PetscInt out_of_core = 0;
-      check_petsc(MatMumpsGetIcntl(F, 22, &out_of_core), "MatMumpsGetIcntl");
-      const char *directory = std::getenv("MUMPS_OOC_TMPDIR");
-      if (root && out_of_core != 0)
-        std::cout << "MUMPS writes its factors out of core, to "
-                  << (directory != nullptr ? directory : "/tmp")
-                  << " (MUMPS_OOC_TMPDIR)." << std::endl;
     }
   } // namespace
 
@@ -151,6 +154,7 @@ namespace softopt
     parameters.keep_factorization = prm.get("Newton steps") == "kept factorization";
     parameters.tolerance          = prm.get_double("GMRES tolerance");
     parameters.max_iterations     = prm.get_integer("GMRES iterations");
+    parameters.out_of_core        = out_of_core;
     prm.leave_subsection();
     const char *icntl7 = ordering == "METIS" ? "5" :
                          ordering == "PORD"  ? "4" :
@@ -158,10 +162,17 @@ namespace softopt
                                                "7";
     check_petsc(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_7", icntl7),
                 "PetscOptionsSetValue");
-    if (out_of_core)
-      check_petsc(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_22", "1"),
-                  "PetscOptionsSetValue");
+    set_out_of_core(out_of_core);
     return parameters;
+  }
+
+
+
+  void
+  DirectSolver::set_out_of_core(const bool out_of_core)
+  {
+    check_petsc(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_22", out_of_core ? "1" : "0"),
+                "PetscOptionsSetValue");
   }
 
 

@@ -61,8 +61,9 @@ namespace softopt
    * case's output directory, without optimizing again. The first row is
    * the run's final analysis of its design (final_analysis/
    * load_path_summary.csv), or an analysis of its design.msh if that did
-   * not reach every target, is not newer than parameters.prm and
-   * design.msh, or lists other functionals. Returns the exit code.
+   * not reach the end of its path (final_analysis/stop_reason.txt), is not
+   * newer than parameters.prm and design.msh, or lists other functionals.
+   * Returns the exit code.
    */
   int
   run_verification(const Settings &settings, const MPI_Comm comm);

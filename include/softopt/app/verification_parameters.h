@@ -21,6 +21,9 @@ namespace softopt
 
     /** Element sizes in mm (empty: no verification). */
     std::vector<double> mesh_sizes;
+
+    /** The factors of the verification meshes on disk. */
+    bool out_of_core = false;
   };
 } // namespace softopt
 

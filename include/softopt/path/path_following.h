@@ -96,6 +96,9 @@ namespace softopt
       std::function<std::string(const PathPoint &,
                                 const EquilibriumProblem::Vector &)>;
 
+    /** The stop reason of a path that reached every target. */
+    static constexpr const char *reached_last_target = "reached the last target load factor";
+
     /** How the path ended, and the states kept at the targets. */
     struct Result
     {

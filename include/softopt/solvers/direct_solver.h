@@ -43,13 +43,21 @@ namespace softopt
       double tolerance = 1e-6;
       /** GMRES iterations before the kept factorization is replaced. */
       unsigned int max_iterations = 20;
+      /** The factors on disk ("Out-of-core factors"). */
+      bool out_of_core = false;
     };
 
     /** Reads the subsection; sets the ordering, and whether the factors
      * go out of core, for every factorization of the run (through PETSc's
-     * options database, which MUMPS reads at its analysis). */
+     * options database, which MUMPS reads at its analysis; subsection
+     * Verification may put its meshes' factors on disk alone). */
     static Parameters
     parse_parameters(ParameterHandler &prm);
+
+    /** Whether the factors of the factorizations analyzed from now on go
+     * out of core (MUMPS' ICNTL(22)). */
+    static void
+    set_out_of_core(const bool out_of_core);
 
     explicit DirectSolver(const MPI_Comm comm);
     ~DirectSolver();
