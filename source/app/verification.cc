@@ -8,7 +8,6 @@
 #include <softopt/io/parameter_differences.h>
 #include <softopt/optimization/design_problem.h>
 #include <softopt/shape/remesh.h>
-#include <softopt/solvers/direct_solver.h>
 
 #include <algorithm>
 #include <cmath>
@@ -240,8 +239,6 @@ namespace softopt
     bool                         all_solved = true;
 
     const AnalysisBody design(settings, comm, design_mesh);
-    if (settings.verification.out_of_core)
-      DirectSolver::set_out_of_core(true);
     for (const double h : settings.verification.mesh_sizes)
       {
         const std::string name = size_name(h);
@@ -251,6 +248,9 @@ namespace softopt
         MPI_Barrier(comm);
         remesh_design(*design.design, mesh, h);
         const AnalysisBody fine(settings, comm, mesh);
+        auto               solver = settings.linear_solver;
+        solver.out_of_core |= settings.verification.out_of_core;
+        fine.problem->set_linear_solver(solver);
         pcout << "\nVerification on a " << h << " mm mesh ("
               << fine.triangulation->n_global_active_cells() << " tetrahedra, "
               << fine.problem->get_dof_handler().n_dofs()
@@ -261,7 +261,6 @@ namespace softopt
         rows.push_back(row);
         all_solved &= solved;
       }
-    DirectSolver::set_out_of_core(settings.linear_solver.out_of_core);
 
     // A constraint's change relative to its quantity Q, not to f = Q -
     // Tolerance (near 0 when active).

@@ -474,6 +474,7 @@ namespace softopt
   HyperelasticProblem::set_linear_solver(const DirectSolver::Parameters &parameters)
   {
     linear_solver = parameters;
+    direct_solver.set_out_of_core(parameters.out_of_core);
   }
 
 

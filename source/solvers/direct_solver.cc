@@ -149,12 +149,11 @@ namespace softopt
   {
     prm.enter_subsection("Linear solver");
     const std::string ordering    = prm.get("MUMPS ordering");
-    const bool        out_of_core = prm.get_bool("Out-of-core factors");
     Parameters        parameters;
     parameters.keep_factorization = prm.get("Newton steps") == "kept factorization";
     parameters.tolerance          = prm.get_double("GMRES tolerance");
     parameters.max_iterations     = prm.get_integer("GMRES iterations");
-    parameters.out_of_core        = out_of_core;
+    parameters.out_of_core        = prm.get_bool("Out-of-core factors");
     prm.leave_subsection();
     const char *icntl7 = ordering == "METIS" ? "5" :
                          ordering == "PORD"  ? "4" :
@@ -162,17 +161,15 @@ namespace softopt
                                                "7";
     check_petsc(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_7", icntl7),
                 "PetscOptionsSetValue");
-    set_out_of_core(out_of_core);
     return parameters;
   }
 
 
 
   void
-  DirectSolver::set_out_of_core(const bool out_of_core)
+  DirectSolver::set_out_of_core(const bool on_disk)
   {
-    check_petsc(PetscOptionsSetValue(nullptr, "-mat_mumps_icntl_22", out_of_core ? "1" : "0"),
-                "PetscOptionsSetValue");
+    out_of_core = on_disk;
   }
 
 
@@ -221,6 +218,7 @@ namespace softopt
         // Working space: 50% above MUMPS' estimate; pivoting on the
         // indefinite tangents past limit points needs more than the default.
         check_petsc(MatMumpsSetIcntl(F, 14, 50), "MatMumpsSetIcntl");
+        check_petsc(MatMumpsSetIcntl(F, 22, out_of_core ? 1 : 0), "MatMumpsSetIcntl");
         analyzed_matrix = A;
       }
     else

@@ -47,16 +47,15 @@ namespace softopt
       bool out_of_core = false;
     };
 
-    /** Reads the subsection; sets the ordering, and whether the factors
-     * go out of core, for every factorization of the run (through PETSc's
-     * options database, which MUMPS reads at its analysis; subsection
-     * Verification may put its meshes' factors on disk alone). */
+    /** Reads the subsection; sets the ordering for every factorization of
+     * the run (through PETSc's options database, which MUMPS reads at its
+     * analysis). */
     static Parameters
     parse_parameters(ParameterHandler &prm);
 
-    /** Whether the factors of the factorizations analyzed from now on go
-     * out of core (MUMPS' ICNTL(22)). */
-    static void
+    /** Whether this solver's factors go out of core (MUMPS' ICNTL(22)),
+     * from its next analysis on. */
+    void
     set_out_of_core(const bool out_of_core);
 
     explicit DirectSolver(const MPI_Comm comm);
@@ -125,6 +124,7 @@ namespace softopt
     MPI_Comm     comm;
     KSP          ksp = nullptr;
     Mat          analyzed_matrix = nullptr;
+    bool         out_of_core     = false;
     unsigned int factorizations = 0;
     /** GMRES on the current matrix, preconditioned by ksp (a PCSHELL). */
     KSP krylov = nullptr;
