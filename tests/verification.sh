@@ -95,6 +95,31 @@ for edit in 's/^g_1,/f_1,/' 's/^\(g_1,[^,]*,[^,]*,\)[^,]*/\1nan/'; do
   fi
 done
 cp -p summary.csv "$summary"
+# verify takes each functional's value at its target, not its lowest or
+# highest along the path (the sphere's single target is also its highest):
+# with those two columns changed, the first row stays; with the value at
+# the target changed, the first row follows it.
+for columns in "minimum maximum" value_at_target; do
+  /usr/bin/python3 - summary.csv "$summary" $columns <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+for r in rows:
+    r.update({c: "1.25" for c in sys.argv[3:]})
+w = csv.DictWriter(open(sys.argv[2], "w", newline=""), fieldnames=rows[0].keys(), lineterminator="\n")
+w.writeheader(); w.writerows(rows)
+PY
+  touch -r summary.csv "$summary"
+  "$softopt" verify moved.prm > verify_column.log 2>&1 || { echo "FAIL verify with $columns edited"; cat verify_column.log; exit 1; }
+  first=$(sed -n 2p moved/verification.csv | cut -d, -f4)
+  expected=$(sed -n 2p first_verification.csv | cut -d, -f4)
+  [ "$columns" = value_at_target ] && expected=1.25
+  if grep -q "from the run's final analysis" verify_column.log && [ "$first" = "$expected" ]; then
+    echo "ok   with $columns of the summary set to 1.25, verify's first g_1 is $first (expected $expected)"
+  else
+    fail "verify with $columns of the summary set to 1.25: first g_1 $first, expected $expected"
+  fi
+done
+cp -p summary.csv "$summary"
 # Nor when the path failed after the last target (optimize exits 1 then;
 # verify must not read the failure as a success): its stop reason edited,
 # the time kept.
