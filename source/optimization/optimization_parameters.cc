@@ -43,8 +43,20 @@ namespace softopt
                       "three (gripper, extender, contractor) or four "
                       "(grip_extend; grip_contract is not stated) of its "
                       "350 iterations. Updates "
-                      "of \"Remesh below quality\" and \"Mesh size "
-                      "schedule\" do not count.");
+                      "of \"Remesh below quality\", \"Mesh size "
+                      "schedule\" and \"Final mesh update\" do not count.");
+    prm.declare_entry("Final mesh update",
+                      "0",
+                      Patterns::Integer(0),
+                      "One more mesh update at this iteration, after the "
+                      "periodic ones (0: none; not in the paper): the design "
+                      "may then move another Design bound about the new X_o "
+                      "in the iterations left. Measured on the gripper at "
+                      "325 of 350 iterations: 6.6 % more grip on the 2 mm "
+                      "mesh, verified at 0.8 mm within 6.0 % as with a "
+                      "1.2 mm mesh from 325 on, for 10 min instead of about "
+                      "an hour (doc/results.md). Must be below Maximum "
+                      "iterations.");
     prm.declare_entry("Remesh below quality",
                       "0",
                       Patterns::Double(0, 1),
@@ -271,6 +283,13 @@ namespace softopt
     design_bound         = prm.get_double("Design bound");
     mesh_update_interval = prm.get_integer("Mesh update interval");
     mesh_updates         = prm.get_integer("Mesh updates");
+    final_mesh_update    = prm.get_integer("Final mesh update");
+    AssertThrow(final_mesh_update == 0 || final_mesh_update < maximum_iterations,
+                ExcMessage(input.where("Optimization", "Final mesh update") + ": " +
+                           std::to_string(final_mesh_update) +
+                           " is not below Maximum iterations (" +
+                           std::to_string(maximum_iterations) +
+                           "), so the update would never be made."));
     remesh_quality       = prm.get_double("Remesh below quality");
     output_interval      = prm.get_integer("Output interval");
     checkpoint_interval  = prm.get_integer("Checkpoint interval");

@@ -79,7 +79,7 @@ namespace softopt
         if (k > first && opt.every(k, opt.checkpoint_interval))
           Checkpoint::save(out.path(), k, x);
         const double new_size = opt.scheduled_mesh_size(k, mesh_made_at(x)); // 0: none
-        const bool   mesh_update = opt.periodic_mesh_update(k) ||
+        const bool   mesh_update = opt.planned_mesh_update(k) ||
                                  new_size > 0 || elements_collapsing(k, x);
         auto before_update = mesh_update ? update_mesh(k, x, new_size) : // X_o <- X_o + psi(d), d <- 0
                                            std::nullopt;
@@ -227,7 +227,7 @@ namespace softopt
     // Elements the design has flattened since the last mesh update (not
     // those of a mesh that is poor itself: remeshing would not help).
     const double threshold = parameters.remesh_quality;
-    if (k == 0 || threshold == 0 || parameters.periodic_mesh_update(k))
+    if (k == 0 || threshold == 0 || parameters.planned_mesh_update(k))
       return false;
     const auto [design, mesh] = problem.element_quality(x);
     if (design >= threshold || mesh < threshold)

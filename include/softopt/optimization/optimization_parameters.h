@@ -29,6 +29,8 @@ namespace softopt
     unsigned int mesh_update_interval = 50;
     /** How many of those periodic mesh updates there are (0: no limit). */
     unsigned int mesh_updates = 0;
+    /** One more mesh update at this iteration (0: none). */
+    unsigned int final_mesh_update = 0;
     /** A mesh update remeshes the design when its worst element quality
      * is below this, and an accepted design below it brings the update
      * forward (0: never). */
@@ -68,12 +70,14 @@ namespace softopt
     double
     scheduled_mesh_size(const unsigned int k, const long mesh_made_at) const;
 
-    /** Whether iteration @p k is one of the periodic mesh updates. */
+    /** Whether iteration @p k is one of the periodic mesh updates or the
+     * final one. */
     bool
-    periodic_mesh_update(const unsigned int k) const
+    planned_mesh_update(const unsigned int k) const
     {
-      return every(k, mesh_update_interval) &&
-             (mesh_updates == 0 || k / mesh_update_interval <= mesh_updates);
+      return (every(k, mesh_update_interval) &&
+              (mesh_updates == 0 || k / mesh_update_interval <= mesh_updates)) ||
+             (final_mesh_update > 0 && k == final_mesh_update);
     }
 
     /** Whether iteration @p k > 0 is one of every @p interval (0: none). */
