@@ -89,6 +89,17 @@ expect "restart with more iterations" $? ok
 if [ "$(rows)" != "0 1 2 " ]; then
   echo "FAIL restart: history.csv has rows $(rows)(expected 0 1 2)"; failures=$((failures + 1))
 fi
+#    An entry the run's program did not have yet (here Final mesh update,
+#    its line removed as an older program wrote parameters.prm) acted with
+#    its default: at the default it passes (to the same refusal as 3), set
+#    otherwise it is a changed entry.
+sed -i '/set Final mesh update/d' run/parameters.prm
+case_file 100 3 > same.prm
+"$softopt" optimize same.prm --restart > log 2>&1
+expect "restart of an older run, a new entry at its default" $? "would not run further"
+(case_file 100 4; printf 'subsection Optimization\n  set Mesh update interval = 0\n  set Final mesh update = 3\nend\n') > final.prm
+"$softopt" optimize final.prm --restart > log 2>&1
+expect "restart of an older run, a new entry set" $? 'Optimization/Final mesh update: (absent: its default "0") then, "3" now'
 
 # 5. Two runs into one folder at once.
 case_file 100 30 > long.prm

@@ -100,15 +100,19 @@ cp -p summary.csv "$summary"
 # with those two columns changed, the first row stays; with the value at
 # the target changed, the first row follows it.
 for columns in "minimum maximum" value_at_target; do
-  /usr/bin/python3 - summary.csv "$summary" $columns <<'PY'
+  /usr/bin/python3 - summary.csv "$summary" $columns <<'PY' || failures=$((failures + 1))
 import csv, sys
 rows = list(csv.DictReader(open(sys.argv[1])))
+missing = set(sys.argv[3:]) - set(rows[0])
+if missing:
+    sys.exit("FAIL the summary has no column %s" % ", ".join(sorted(missing)))
 for r in rows:
     r.update({c: "1.25" for c in sys.argv[3:]})
 w = csv.DictWriter(open(sys.argv[2], "w", newline=""), fieldnames=rows[0].keys(), lineterminator="\n")
 w.writeheader(); w.writerows(rows)
 PY
   touch -r summary.csv "$summary"
+  cmp -s summary.csv "$summary" && fail "setting $columns to 1.25 did not change the summary"
   "$softopt" verify moved.prm > verify_column.log 2>&1 || { echo "FAIL verify with $columns edited"; cat verify_column.log; exit 1; }
   first=$(sed -n 2p moved/verification.csv | cut -d, -f4)
   expected=$(sed -n 2p first_verification.csv | cut -d, -f4)

@@ -18,9 +18,11 @@ namespace softopt
     }
 
     /** "Subsection/Entry" -> value of a file in ParameterHandler::PRM
-     * format (comments, and the "# default: ..." deal.II appends, dropped). */
+     * format (comments dropped). deal.II appends "# default: ..." to a value
+     * that is not its entry's default: into @p defaults, if given, goes
+     * that, or else the value. */
     std::map<std::string, std::string>
-    entries(std::istream &in)
+    entries(std::istream &in, std::map<std::string, std::string> *defaults = nullptr)
     {
       std::map<std::string, std::string> result;
       std::vector<std::string>           path;
@@ -40,6 +42,9 @@ namespace softopt
               key += trim(text.substr(4, equal - 4));
               std::string value = text.substr(equal + 1);
               const auto  note  = value.rfind("# default:");
+              if (defaults)
+                (*defaults)[key] =
+                  trim(note == std::string::npos ? value : value.substr(note + 10));
               if (note != std::string::npos)
                 value = value.substr(0, note);
               result[key] = trim(value);
@@ -112,7 +117,8 @@ namespace softopt
     const auto    then = entries(file);
     std::stringstream printed;
     now.print_parameters(printed, dealii::ParameterHandler::PRM);
-    const auto current = entries(printed);
+    std::map<std::string, std::string> defaults;
+    const auto                         current = entries(printed, &defaults);
 
     std::vector<std::string> differences;
     const auto               say = [](const auto &map, const std::string &key) {
@@ -124,14 +130,22 @@ namespace softopt
       keys.insert(key);
     for (const auto &[key, value] : current)
       keys.insert(key);
-    // An entry the run's program did not have yet is not compared: it has
-    // its default now, as the older program behaved.
     for (const auto &key : keys)
-      if (!may_differ(key, may_change) && then.count(key) != 0 &&
-          (current.count(key) == 0 ||
-           !same_value(then.at(key), current.at(key))))
-        differences.push_back(key + ": " + say(then, key) + " then, " +
-                              say(current, key) + " now");
+      {
+        if (may_differ(key, may_change))
+          continue;
+        // An entry the run's program did not have yet acted with its
+        // default then, as the older program behaved.
+        if (then.count(key) == 0)
+          {
+            if (current.count(key) != 0 && !same_value(defaults.at(key), current.at(key)))
+              differences.push_back(key + ": (absent: its default \"" + defaults.at(key) +
+                                    "\") then, " + say(current, key) + " now");
+          }
+        else if (current.count(key) == 0 || !same_value(then.at(key), current.at(key)))
+          differences.push_back(key + ": " + say(then, key) + " then, " +
+                                say(current, key) + " now");
+      }
     return differences;
   }
 } // namespace softopt

@@ -15,8 +15,10 @@ namespace softopt
    * write_parameters) and @p now, each as "Subsection/Entry: <then> then,
    * <now> now"; entries named in @p may_change ("Subsection/Entry", or
    * "Subsection/" followed by a star for a whole subsection) are not
-   * compared, nor entries the written file lacks (declared since; values
-   * are compared as text).
+   * compared. An entry the written file lacks (declared since) differs
+   * only if it is set to other than its default now, the value the older
+   * program acted with. Values are compared word by word, numbers by
+   * value.
    */
   std::vector<std::string>
   parameter_differences(const std::string                &written_file,
