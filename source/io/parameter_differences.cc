@@ -138,7 +138,7 @@ namespace softopt
         // default then, as the older program behaved.
         if (then.count(key) == 0)
           {
-            if (current.count(key) != 0 && !same_value(defaults.at(key), current.at(key)))
+            if (!same_value(defaults.at(key), current.at(key)))
               differences.push_back(key + ": (absent: its default \"" + defaults.at(key) +
                                     "\") then, " + say(current, key) + " now");
           }

@@ -284,22 +284,22 @@ namespace softopt
     mesh_update_interval = prm.get_integer("Mesh update interval");
     mesh_updates         = prm.get_integer("Mesh updates");
     final_mesh_update    = prm.get_integer("Final mesh update");
-    AssertThrow(final_mesh_update == 0 || final_mesh_update < maximum_iterations,
-                ExcMessage(input.where("Optimization", "Final mesh update") + ": " +
-                           std::to_string(final_mesh_update) +
-                           " is not below Maximum iterations (" +
-                           std::to_string(maximum_iterations) +
-                           "), so the update would never be made."));
-    AssertThrow(final_mesh_update == 0 || mesh_update_interval == 0 ||
-                  (mesh_updates > 0 && final_mesh_update > mesh_update_interval * mesh_updates),
-                ExcMessage(input.where("Optimization", "Final mesh update") + ": " +
-                           std::to_string(final_mesh_update) +
-                           " is not after the periodic mesh updates (every " +
-                           std::to_string(mesh_update_interval) + " iterations, " +
-                           (mesh_updates == 0 ? std::string("without end: Mesh updates = 0") :
-                                                std::to_string(mesh_updates) + " of them, the last at " +
-                                                  std::to_string(mesh_update_interval * mesh_updates)) +
-                           ")."));
+    if (final_mesh_update > 0)
+      {
+        const std::string where = input.where("Optimization", "Final mesh update") + ": " +
+                                  std::to_string(final_mesh_update);
+        AssertThrow(final_mesh_update < maximum_iterations,
+                    ExcMessage(where + " is not below Maximum iterations (" +
+                               std::to_string(maximum_iterations) +
+                               "), so the update would never be made."));
+        AssertThrow(mesh_update_interval == 0 ||
+                      (mesh_updates > 0 &&
+                       final_mesh_update > mesh_update_interval * mesh_updates),
+                    ExcMessage(where + " is not after the last periodic mesh update "
+                               "(Mesh update interval " +
+                               std::to_string(mesh_update_interval) + ", Mesh updates " +
+                               std::to_string(mesh_updates) + "; 0 is no limit)."));
+      }
     remesh_quality       = prm.get_double("Remesh below quality");
     output_interval      = prm.get_integer("Output interval");
     checkpoint_interval  = prm.get_integer("Checkpoint interval");
