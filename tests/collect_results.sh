@@ -1,0 +1,44 @@
+#!/bin/bash
+# scripts/collect_results: a finished run's small records copied unchanged
+# and every panel rendered (history, load path, tracked points, snapshots,
+# design, deformed part), on a two-iteration run of the thick sphere octant;
+# a folder that is no run's output is refused with a message.
+# Usage: collect_results.sh SOFTOPT_EXECUTABLE SOURCE_DIR
+softopt=$1
+source=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+source "$source/tests/sphere_case.sh"
+failures=0
+check() { # CONDITION_EXIT_CODE MESSAGE
+  if [ "$1" -eq 0 ]; then echo "ok   $2"; else echo "FAIL $2"; failures=$((failures + 1)); fi
+}
+
+{ thick_sphere_case "$source" run 2 0.5 "  set Output interval = 1"
+  printf 'subsection Output\n  set VTU output = targets\n  set Deformed STL = true\n'
+  printf '  set Tracked points = a: 1.2, 1.2, 1\nend\n'
+  printf 'subsection Verification\n  set Mesh sizes = 0.4\nend\n'; } > run.prm
+"$softopt" optimize run.prm > run.log 2>&1 || { echo "FAIL optimize"; cat run.log; exit 1; }
+
+/usr/bin/python3 "$source/scripts/collect_results" run results > collect.log 2>&1
+check $? "collect_results exits with 0"
+for f in history.csv verification.csv castability.csv paths.log stop_reason.txt \
+         final_analysis/load_path.csv final_analysis/tracked_points.csv; do
+  cmp -s "run/$f" "results/$f"
+  check $? "$f copied unchanged"
+done
+for f in history.png pressure_volume.png tracked_points.png snapshots.png \
+         design.png deformed_302kPa.png; do
+  [ -s "results/$f" ]
+  check $? "$f rendered"
+done
+[ -z "$(find results -name '*.vtu' -o -name '*.stl')" ]
+check $? "no VTU or STL among the records"
+
+/usr/bin/python3 "$source/scripts/collect_results" run.prm elsewhere > refused.log 2>&1
+status=$?
+[ $status -ne 0 ] && grep -q "run.prm has no history.csv" refused.log && [ ! -e elsewhere ]
+check $? "a folder that is no output directory is refused, nothing written (exit $status: $(cat refused.log))"
+
+[ $failures -eq 0 ] || { cat collect.log; exit 1; }
