@@ -2,7 +2,8 @@
 # scripts/collect_results: a finished run's small records copied unchanged
 # and every panel rendered (history, load path, tracked points, snapshots,
 # design, deformed part), on a two-iteration run of the thick sphere octant;
-# a folder that is no run's output is refused with a message.
+# a run still going (history.csv only) gets its history and a note per
+# missing file; a folder that is no run's output is refused with a message.
 # Usage: collect_results.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
@@ -41,4 +42,16 @@ status=$?
 [ $status -ne 0 ] && grep -q "run.prm has no history.csv" refused.log && [ ! -e elsewhere ]
 check $? "a folder that is no output directory is refused, nothing written (exit $status: $(cat refused.log))"
 
-[ $failures -eq 0 ] || { cat collect.log; exit 1; }
+# A run still going: history.csv only. Its history is drawn, the rest
+# skipped with a note each.
+mkdir partial && cp run/history.csv partial/
+/usr/bin/python3 "$source/scripts/collect_results" partial partial_results > partial.log 2>&1
+check $? "a run with history.csv only: exit 0"
+[ -s partial_results/history.png ] && [ ! -e partial_results/design.png ]
+check $? "its history.png rendered, no design.png"
+for note in "no design.stl" "no snapshots" "no final_analysis" "no verification.csv"; do
+  grep -q "$note" partial.log
+  check $? "its note: $note"
+done
+
+[ $failures -eq 0 ] || { cat collect.log partial.log; exit 1; }
