@@ -7,11 +7,8 @@
 # Usage: bad_input.sh SOFTOPT_EXECUTABLE BAD_INPUT_FOLDER
 softopt=$1
 folder=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
+source "${BASH_SOURCE%/*}/script_test.sh"
 
-failures=0
 for prm in "$folder"/*.prm; do
   name=$(basename "$prm" .prm)
   expect=$(head -n 1 "$prm" | sed 's/^# expect: //')

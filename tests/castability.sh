@@ -14,11 +14,7 @@
 # Usage: castability.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+source "${BASH_SOURCE%/*}/script_test.sh"
 source "$source/tests/sphere_case.sh"
 sphere() { # OUTPUT_DIRECTORY MINIMUM_WALL_THICKNESS ITERATIONS
   sphere_case "$source/meshes/sphere_octant.geo" "$1" "" 302 "$3" 0

@@ -7,11 +7,8 @@
 # Usage: collect_results.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
+source "${BASH_SOURCE%/*}/script_test.sh"
 source "$source/tests/sphere_case.sh"
-failures=0
 check() { # CONDITION_EXIT_CODE MESSAGE
   if [ "$1" -eq 0 ]; then echo "ok   $2"; else echo "FAIL $2"; failures=$((failures + 1)); fi
 }

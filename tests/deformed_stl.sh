@@ -11,9 +11,7 @@
 # Usage: deformed_stl.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
+source "${BASH_SOURCE%/*}/script_test.sh"
 sed -e "s#../meshes/#$source/meshes/#" \
     -e 's/set VTU output = none/set VTU output = none\n  set Deformed STL = true/' \
     "$source/tests/compliance_ratio_path.prm" > case.prm

@@ -14,17 +14,13 @@
 # Usage: mesh_schedule.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
+source "${BASH_SOURCE%/*}/script_test.sh"
 source "$source/tests/sphere_case.sh"
 case_file() { # OUTPUT_DIRECTORY ITERATIONS SCHEDULE [MESH_SIZE]
   thick_sphere_case "$source" "$1" "$2" "${4:-0.5}" \
     "  set Mesh size schedule = $3
   set Checkpoint interval = 2"
 }
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
 run() { # NAME ARGUMENTS...
   local name=$1
   shift

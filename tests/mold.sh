@@ -23,11 +23,7 @@
 # Usage: mold.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
+source "${BASH_SOURCE%/*}/script_test.sh"
 
 case_prm() { # MESH_FILE MESH_SIZE OUTPUT_DIRECTORY [EXTRA LINES]
   cat <<PRM

@@ -7,9 +7,7 @@
 # Usage: mumps_ordering.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
+source "${BASH_SOURCE%/*}/script_test.sh"
 
 library=$(ls /usr/lib/x86_64-linux-gnu/libmumps_common*.so* /lib/x86_64-linux-gnu/libmumps_common*.so* 2>/dev/null | head -n 1)
 if [ -z "$library" ]; then

@@ -11,10 +11,7 @@
 # Usage: no_shell.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
-failures=0
+source "${BASH_SOURCE%/*}/script_test.sh"
 
 # The sphere octant's geometry beside the parameter files.
 cp "$source/meshes/sphere_octant.geo" sphere.geo

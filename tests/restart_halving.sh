@@ -8,9 +8,7 @@
 # Usage: restart_halving.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
+source "${BASH_SOURCE%/*}/script_test.sh"
 sed "s#../meshes#$source/meshes#; s/Checkpoint interval  = 0/Checkpoint interval  = 1/" \
   "$source/tests/step_halving.prm" > case.prm
 "$softopt" case.prm > first.log 2>&1 || { echo "FAIL first run"; cat first.log; exit 1; }
@@ -19,7 +17,6 @@ rm results/final_analysis/stop_reason.txt
 "$softopt" optimize case.prm --restart > restart.log 2>&1 ||
   { echo "FAIL restart"; cat restart.log; exit 1; }
 cut -d, -f1,2,3,5- results/history.csv > restarted.csv
-failures=0
 halved=$(grep -c "step halved" restart.log)
 if ! grep -q "Restarting at iteration 1" restart.log || [ "$halved" -ne 3 ]; then
   echo "FAIL the restart did not resume at iteration 1 and halve 3 times ($halved)"

@@ -25,11 +25,9 @@
 # Usage: run_folder.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
-work=$(mktemp -d)
+source "${BASH_SOURCE%/*}/script_test.sh"
 trap 'kill $background $rerun 2>/dev/null; rm -rf "$work"' EXIT
-cd "$work" || exit 1
 cp "$source/meshes/sphere_octant.geo" sphere.geo
-failures=0
 
 source "$source/tests/sphere_case.sh"
 case_file() { # $1: pressure, $2: maximum iterations

@@ -14,16 +14,12 @@
 # Usage: verification.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
+source "${BASH_SOURCE%/*}/script_test.sh"
 source "$source/tests/sphere_case.sh"
 case_file() { # OUTPUT_DIRECTORY ITERATIONS MESH_SIZES
   thick_sphere_case "$source" "$1" "$2" 0.5 ""
   printf 'subsection Verification\n  set Mesh sizes = %s\nend\n' "$3"
 }
-failures=0
-fail() { echo "FAIL $*"; failures=$((failures + 1)); }
 
 case_file sphere 1 "0.2, 0.12" > sphere.prm
 "$softopt" optimize sphere.prm > sphere.log 2>&1 || { echo "FAIL optimize sphere"; cat sphere.log; exit 1; }
