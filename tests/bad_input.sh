@@ -16,12 +16,12 @@ for prm in "$folder"/*.prm; do
   message=$("$softopt" "$prm" 2>&1)
   code=$?
   if [ $code -eq 0 ]; then
-    echo "FAIL $name: exit code 0"; failures=$((failures + 1))
+    fail "$name: exit code 0"
   elif ! grep -qF -- "$expect" <<< "$message"; then
-    echo "FAIL $name: the message does not contain \"$expect\":"
-    echo "$message"; failures=$((failures + 1))
+    fail "$name: the message does not contain \"$expect\":"
+    echo "$message"
   elif [ "$(cat output/load_path.csv)" != "good results" ]; then
-    echo "FAIL $name: overwrote earlier results"; failures=$((failures + 1))
+    fail "$name: overwrote earlier results"
   else
     echo "ok   $name (exit code $code)"
   fi
@@ -29,8 +29,7 @@ done
 
 # A refused initial design writes no design.stl.
 if [ -e results-first-design/design.stl ]; then
-  echo "FAIL first_design_refused: design.stl was written for a design never accepted"
-  failures=$((failures + 1))
+  fail "first_design_refused: design.stl was written for a design never accepted"
 else
   echo "ok   first_design_refused writes no design.stl"
 fi
@@ -39,8 +38,7 @@ fi
 csv=results-divergence/load_path.csv
 if [ ! -f $csv ] || ! head -n 1 $csv | grep -q '^step,load_factor' ||
    [ "$(tail -n 1 $csv | cut -d, -f1)" = "step" ]; then
-  echo "FAIL divergence: $csv is missing or holds no converged row"
-  failures=$((failures + 1))
+  fail "divergence: $csv is missing or holds no converged row"
 else
   echo "ok   divergence keeps $(($(wc -l < $csv) - 1)) converged rows in load_path.csv"
 fi

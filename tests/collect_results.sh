@@ -10,7 +10,7 @@ source=$2
 source "${BASH_SOURCE%/*}/script_test.sh"
 source "$source/tests/sphere_case.sh"
 check() { # CONDITION_EXIT_CODE MESSAGE
-  if [ "$1" -eq 0 ]; then echo "ok   $2"; else echo "FAIL $2"; failures=$((failures + 1)); fi
+  if [ "$1" -eq 0 ]; then echo "ok   $2"; else fail "$2"; fi
 }
 
 { thick_sphere_case "$source" run 2 0.5 "  set Output interval = 1"

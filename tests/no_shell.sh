@@ -22,11 +22,11 @@ common() { # $1: mesh file, $2: output directory, $3: mesh parameters
 
 check() { # $1: probe name, $2: planted file, $3: exit code, $4: expected ("ok" or "refused")
   if [ -e "$2" ]; then
-    echo "FAIL $1: the planted command ran (it created $2)"; failures=$((failures + 1))
+    fail "$1: the planted command ran (it created $2)"
   elif [ "$4" = ok ] && [ "$3" -ne 0 ]; then
-    echo "FAIL $1: exit code $3 (expected 0)"; cat log; failures=$((failures + 1))
+    fail "$1: exit code $3 (expected 0)"; cat log
   elif [ "$4" = refused ] && [ "$3" -eq 0 ]; then
-    echo "FAIL $1: exit code 0 (expected a refusal)"; failures=$((failures + 1))
+    fail "$1: exit code 0 (expected a refusal)"
   else
     echo "ok   $1: nothing ran (exit code $3)"
   fi
@@ -38,7 +38,7 @@ common sphere.geo "o'\$(touch planted_1)'x" "" > output.prm
 code=$?
 check "Output directory" planted_1 $code ok
 if [ $code -eq 0 ] && ! grep -q "Wrote history.png" log; then
-  echo "FAIL Output directory: the plots were not made"; failures=$((failures + 1))
+  fail "Output directory: the plots were not made"
 fi
 
 # 2. The mesh file's name through the gmsh call.
@@ -53,7 +53,7 @@ common sphere.geo results-3 'r$(touch planted_3): 10' > parameters.prm
 code=$?
 check "Mesh parameters" planted_3 $code refused
 if [ $code -ne 0 ] && ! grep -q 'is not declared by DefineConstant' log; then
-  echo "FAIL Mesh parameters: the message does not name the undeclared number:"
-  cat log; failures=$((failures + 1))
+  fail "Mesh parameters: the message does not name the undeclared number:"
+  cat log
 fi
 exit $failures

@@ -19,14 +19,12 @@ rm results/final_analysis/stop_reason.txt
 cut -d, -f1,2,3,5- results/history.csv > restarted.csv
 halved=$(grep -c "step halved" restart.log)
 if ! grep -q "Restarting at iteration 1" restart.log || [ "$halved" -ne 3 ]; then
-  echo "FAIL the restart did not resume at iteration 1 and halve 3 times ($halved)"
-  failures=$((failures + 1))
+  fail "the restart did not resume at iteration 1 and halve 3 times ($halved)"
 else
   echo "ok   the restart resumed at iteration 1 and halved $halved times (3 expected)"
 fi
 if ! cmp -s uninterrupted.csv restarted.csv; then
-  echo "FAIL history.csv differs:"; diff uninterrupted.csv restarted.csv
-  failures=$((failures + 1))
+  fail "history.csv differs:"; diff uninterrupted.csv restarted.csv
 else
   echo "ok   history.csv is that of the uninterrupted run ($(($(wc -l < restarted.csv) - 1)) rows)"
 fi

@@ -37,15 +37,14 @@ case_file() { # $1: pressure, $2: maximum iterations
 expect() { # $1: probe, $2: exit code, $3: "ok" or the text the message must hold
   if [ "$3" = ok ]; then
     if [ "$2" -ne 0 ]; then
-      echo "FAIL $1: exit code $2 (expected 0)"; cat log; failures=$((failures + 1))
+      fail "$1: exit code $2 (expected 0)"; cat log
     else
       echo "ok   $1"
     fi
   elif [ "$2" -eq 0 ]; then
-    echo "FAIL $1: exit code 0 (expected a refusal)"; failures=$((failures + 1))
+    fail "$1: exit code 0 (expected a refusal)"
   elif ! grep -qF -- "$3" log; then
-    echo "FAIL $1: the message does not contain \"$3\":"; cat log
-    failures=$((failures + 1))
+    fail "$1: the message does not contain \"$3\":"; cat log
   else
     echo "ok   $1: refused (exit code $2)"
   fi
@@ -62,7 +61,7 @@ before=$(md5sum < run/history.csv)
 "$softopt" optimize case.prm > log 2>&1
 expect "fresh run into an earlier run's folder" $? "holds an earlier run"
 if [ "$(md5sum < run/history.csv)" != "$before" ]; then
-  echo "FAIL fresh run: history.csv was changed"; failures=$((failures + 1))
+  fail "fresh run: history.csv was changed"
 fi
 
 # 2. A restart with another pressure.
@@ -85,7 +84,7 @@ case_file 100.0 3 > longer.prm
 "$softopt" optimize longer.prm --restart > log 2>&1
 expect "restart with more iterations" $? ok
 if [ "$(rows)" != "0 1 2 " ]; then
-  echo "FAIL restart: history.csv has rows $(rows)(expected 0 1 2)"; failures=$((failures + 1))
+  fail "restart: history.csv has rows $(rows)(expected 0 1 2)"
 fi
 #    An entry the run's program did not have yet (here Final mesh update,
 #    its line removed as an older program wrote parameters.prm) acted with
@@ -116,7 +115,7 @@ wait $background 2>/dev/null
 "$softopt" optimize case.prm --start-over > log 2>&1
 expect "start over" $? ok
 if [ "$(rows)" != "0 1 " ]; then
-  echo "FAIL start over: history.csv has rows $(rows)(expected 0 1)"; failures=$((failures + 1))
+  fail "start over: history.csv has rows $(rows)(expected 0 1)"
 fi
 # 7. The design snapshots' index after a restart (at iteration 1, the
 #    last checkpoint).
@@ -129,8 +128,7 @@ sed 's/Maximum iterations = 2/Maximum iterations = 3/' vtu.prm > vtu3.prm
 expect "restart with snapshots" $? ok
 listed=$(grep -o 'file="design_[0-9]*.pvtu"' run/design.pvd | tr '\n' ' ')
 if [ "$listed" != 'file="design_0000.pvtu" file="design_0001.pvtu" file="design_0002.pvtu" ' ]; then
-  echo "FAIL design.pvd after the restart lists $listed(expected iterations 0, 1, 2)"
-  failures=$((failures + 1))
+  fail "design.pvd after the restart lists $listed(expected iterations 0, 1, 2)"
 else
   echo "ok   design.pvd after the restart lists iterations 0, 1 and 2"
 fi
@@ -138,17 +136,15 @@ fi
 #    --start-over removed), the last the final design.stl.
 listed=$(cd run/snapshots && ls | tr '\n' ' ')
 if [ "$listed" != "design_0000.stl design_0001.stl design_0002.stl " ]; then
-  echo "FAIL snapshots/ holds $listed(expected design_0000.stl to design_0002.stl)"
-  failures=$((failures + 1))
+  fail "snapshots/ holds $listed(expected design_0000.stl to design_0002.stl)"
 elif ! cmp -s run/snapshots/design_0002.stl run/design.stl; then
-  echo "FAIL snapshots/design_0002.stl differs from design.stl (the same design)"
-  failures=$((failures + 1))
+  fail "snapshots/design_0002.stl differs from design.stl (the same design)"
 else
   echo "ok   snapshots/ holds design_0000.stl to design_0002.stl, the last equal to design.stl"
 fi
 rendered=$(/usr/bin/python3 "$source/scripts/render_snapshots" run snapshots.png --panels 2 2>&1)
 if [ "$rendered" != "Wrote snapshots.png (2 snapshots)" ] || [ ! -s snapshots.png ]; then
-  echo "FAIL render_snapshots --panels 2: $rendered"; failures=$((failures + 1))
+  fail "render_snapshots --panels 2: $rendered"
 else
   echo "ok   render_snapshots --panels 2 draws the first and the last"
 fi
@@ -186,11 +182,9 @@ for _ in $(seq 600); do
 done
 kill -9 $rerun; wait $rerun 2>/dev/null
 if [ $reached = no ]; then
-  echo "FAIL killed final analysis: the rerun did not reach its final analysis in 60 s"
-  failures=$((failures + 1))
+  fail "killed final analysis: the rerun did not reach its final analysis in 60 s"
 elif [ -e run/final_analysis/stop_reason.txt ]; then
-  echo "FAIL killed final analysis: the finished run's stop_reason.txt is still there"
-  failures=$((failures + 1))
+  fail "killed final analysis: the finished run's stop_reason.txt is still there"
 else
   echo "ok   killed final analysis: no stale stop_reason.txt ($(($(wc -l < run/final_analysis/load_path.csv) - 1)) rows in load_path.csv)"
 fi
@@ -198,7 +192,7 @@ case_file 100 3 > case3.prm
 "$softopt" optimize case3.prm --restart > log 2>&1
 expect "restart after the killed final analysis" $? ok
 if [ "$(cat run/final_analysis/stop_reason.txt 2>/dev/null)" != "reached the last target load factor" ]; then
-  echo "FAIL the restart did not finish the final analysis"; failures=$((failures + 1))
+  fail "the restart did not finish the final analysis"
 fi
 # 11. A full disk, and a folder where a file is.
 sphere_case sphere.geo full "" 100 1 0 > full.prm
