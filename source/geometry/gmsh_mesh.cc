@@ -313,15 +313,28 @@ namespace softopt
     const int          status = run_program(arguments, log);
     std::ifstream      log_in(log);
     std::ostringstream log_text;
-    log_text << log_in.rdbuf();
+    // Not "log_text << log_in.rdbuf()": an empty log sets log_text's
+    // failbit, and every line below would then be lost.
+    log_text << std::string(std::istreambuf_iterator<char>(log_in), {});
     std::filesystem::remove(log);
     if (status == 0 && std::ifstream(output).good())
       return "";
+    // Say why gmsh stopped: its log is empty when it was killed or could
+    // not start, and a bare "could not mesh" sends the user to the geometry.
     if (status == not_found)
       log_text << "gmsh is not in PATH (apt-get install gmsh)\n";
     else if (status == cannot_start)
       log_text << "gmsh could not be started, or its log <" << log
                << "> not written\n";
+    else if (status == killed)
+      log_text << "gmsh was killed by a signal before it finished (out of "
+                  "memory? `dmesg` names the kernel's OOM kills; run the "
+                  "meshing alone or with less beside it)\n";
+    else if (status != 0)
+      log_text << "gmsh exited with status " << status << "\n";
+    else
+      log_text << "gmsh exited with status 0 but wrote no <" << output
+               << ">\n";
     return "(command: " + command_line(arguments) + "):\n" + log_text.str();
   }
 

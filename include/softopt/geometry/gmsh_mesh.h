@@ -123,8 +123,9 @@ namespace softopt
   /**
    * Runs gmsh with @p arguments (each one argument, no shell: see
    * run_program()), writing @p output (on the calling rank only). Returns
-   * "" if gmsh succeeded and wrote @p output, else the command and gmsh's
-   * log, for a message.
+   * "" if gmsh succeeded and wrote @p output, else the command, gmsh's
+   * log and how gmsh ended (killed by a signal, its exit status), for a
+   * message.
    */
   std::string
   run_gmsh(std::vector<std::string> arguments, const std::string &output);
