@@ -120,7 +120,8 @@ namespace softopt
                 {"Command", "Output directory", "Print timings", "Output/*", "Verification/*",
                  "Optimization/Maximum iterations", "Optimization/Checkpoint interval",
                  "Optimization/Output interval", "Optimization/Final analysis steps",
-                 "Linear solver/Out-of-core factors"});
+                 "Linear solver/Out-of-core factors",
+                 "Linear solver/Out-of-core factors above cells"});
               if (!differences.empty())
                 {
                   error = file + ": --restart continues the run in <" + out.path() +

@@ -474,7 +474,8 @@ namespace softopt
   HyperelasticProblem::set_linear_solver(const DirectSolver::Parameters &parameters)
   {
     linear_solver = parameters;
-    direct_solver.set_out_of_core(parameters.out_of_core);
+    direct_solver.set_out_of_core(
+      parameters.out_of_core_for(triangulation.n_global_active_cells()));
   }
 
 

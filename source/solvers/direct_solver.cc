@@ -125,6 +125,19 @@ namespace softopt
                       "in memory, e.g. a verification at 0.8 mm: on the 1.2 mm "
                       "actuator the peak memory fell from 1.16 to 0.73 GB at "
                       "the same speed (doc/benchmarks.md).");
+    prm.declare_entry("Out-of-core factors above cells",
+                      "0",
+                      Patterns::Integer(0),
+                      "The factors on disk, as with \"Out-of-core factors = "
+                      "true\", on every mesh of more tetrahedra than this (0: "
+                      "never by size). For a mesh-size schedule that ends on a "
+                      "fine mesh: the coarse meshes keep their factors in "
+                      "memory (faster), the fine one writes them to disk "
+                      "(on two ranks a 127,000-tetrahedron mesh held over 21 "
+                      "GB with its factors in memory, 16 GB with them on "
+                      "disk). Applies to the physics' factorizations (the "
+                      "optimization's, the final analysis's and the "
+                      "verification's), not to the shape filter's.");
     prm.declare_entry("GMRES tolerance",
                       "1e-6",
                       Patterns::Double(1e-14, 1e-1),
@@ -154,6 +167,7 @@ namespace softopt
     parameters.tolerance          = prm.get_double("GMRES tolerance");
     parameters.max_iterations     = prm.get_integer("GMRES iterations");
     parameters.out_of_core        = prm.get_bool("Out-of-core factors");
+    parameters.out_of_core_above_cells = prm.get_integer("Out-of-core factors above cells");
     prm.leave_subsection();
     const char *icntl7 = ordering == "METIS" ? "5" :
                          ordering == "PORD"  ? "4" :

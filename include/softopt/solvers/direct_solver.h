@@ -45,6 +45,16 @@ namespace softopt
       unsigned int max_iterations = 20;
       /** The factors on disk ("Out-of-core factors"). */
       bool out_of_core = false;
+      /** The factors on disk on meshes of more tetrahedra than this
+       * ("Out-of-core factors above cells"; 0: by out_of_core alone). */
+      unsigned long long out_of_core_above_cells = 0;
+
+      /** Whether the factors of a mesh of @p n_cells tetrahedra go on disk. */
+      bool
+      out_of_core_for(const unsigned long long n_cells) const
+      {
+        return out_of_core || (out_of_core_above_cells > 0 && n_cells > out_of_core_above_cells);
+      }
     };
 
     /** Reads the subsection; sets the ordering for every factorization of
