@@ -88,6 +88,8 @@ namespace softopt
     problem->setup_system();
     problem->set_linear_solver(parameters.linear_solver);
     filter.setup(*design, parameters.geometry);
+    filter.set_out_of_core(
+      parameters.linear_solver.out_of_core_for(triangulation->n_global_active_cells()));
     mesh_file = file;
   }
 

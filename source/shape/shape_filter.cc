@@ -247,6 +247,7 @@ namespace softopt
     mass_matrix.compress(VectorOperation::add);
     volume = Utilities::MPI::sum(volume, comm);
     solver = std::make_unique<DirectSolver>(comm);
+    solver->set_out_of_core(out_of_core);
   }
 
 
@@ -435,6 +436,17 @@ namespace softopt
   ShapeFilter::forget_factorization()
   {
     solver = std::make_unique<DirectSolver>(matrix.get_mpi_communicator());
+    solver->set_out_of_core(out_of_core);
+  }
+
+
+
+  void
+  ShapeFilter::set_out_of_core(const bool on_disk)
+  {
+    out_of_core = on_disk;
+    if (solver)
+      solver->set_out_of_core(on_disk);
   }
 
 

@@ -44,27 +44,29 @@ namespace softopt
 
     /**
      * Says what MUMPS did with the subsection's settings, from the factor
-     * @p F: once per run, if it used another ordering than "MUMPS
-     * ordering" (it falls back to its default, silently, when it was built
-     * without the one asked for; Debian's MUMPS has neither METIS nor
-     * SCOTCH), and where it writes the factors whenever they go out of
-     * core after being in memory ("Out-of-core factors" of subsection
-     * Linear solver or Verification; ICNTL(22) read back, so the log shows
-     * that the option reached MUMPS).
+     * @p F of a solver's first factorization: whether its factors go out
+     * of core and where ("Out-of-core factors" and "Out-of-core factors
+     * above cells" of subsection Linear solver, or Verification; ICNTL(22)
+     * read back, so the log shows that the option reached MUMPS, and the
+     * system's size, so it shows which factorization: the physics' or the
+     * shape filter's), and, once per run, if it used another ordering than
+     * "MUMPS ordering" (it falls back to its default, silently, when it was
+     * built without the one asked for; Debian's MUMPS has neither METIS nor
+     * SCOTCH).
      */
     void
     report_mumps_settings(const Mat F, const MPI_Comm comm)
     {
-      const bool  root = Utilities::MPI::this_mpi_process(comm) == 0;
-      static bool out_of_core_reported = false;
-      PetscInt    out_of_core          = 0;
+      const bool root        = Utilities::MPI::this_mpi_process(comm) == 0;
+      PetscInt   out_of_core = 0, rows = 0, columns = 0;
       check_petsc(MatMumpsGetIcntl(F, 22, &out_of_core), "MatMumpsGetIcntl");
+      check_petsc(MatGetSize(F, &rows, &columns), "MatGetSize");
       const char *directory = std::getenv("MUMPS_OOC_TMPDIR");
-      if (root && out_of_core != 0 && !out_of_core_reported)
-        std::cout << "MUMPS writes its factors out of core, to "
+      if (root && out_of_core != 0)
+        std::cout << "MUMPS writes the factors of a system of " << rows
+                  << " unknowns out of core, to "
                   << (directory != nullptr ? directory : "/tmp")
                   << " (MUMPS_OOC_TMPDIR)." << std::endl;
-      out_of_core_reported = out_of_core != 0;
 
       static bool reported = false;
       if (reported)
@@ -133,11 +135,13 @@ namespace softopt
                       "never by size). For a mesh-size schedule that ends on a "
                       "fine mesh: the coarse meshes keep their factors in "
                       "memory (faster), the fine one writes them to disk "
-                      "(on two ranks a 127,000-tetrahedron mesh held over 21 "
-                      "GB with its factors in memory, 16 GB with them on "
-                      "disk). Applies to the physics' factorizations (the "
-                      "optimization's, the final analysis's and the "
-                      "verification's), not to the shape filter's.");
+                      "(on two ranks the contractor's 127,000-tetrahedron "
+                      "mesh held over 21 GB with its factors in memory, and "
+                      "still 20.6 GB with the physics' on disk: the shape "
+                      "filter's are as large). Applies to every "
+                      "factorization on such a mesh: the physics' (the "
+                      "optimization's, the final analysis's, the "
+                      "verification's) and the shape filter's.");
     prm.declare_entry("GMRES tolerance",
                       "1e-6",
                       Patterns::Double(1e-14, 1e-1),

@@ -85,6 +85,12 @@ namespace softopt
     void
     forget_factorization();
 
+    /** Whether the filter's factors go on disk (MUMPS' ICNTL(22)), from
+     * the next factorization on; on a fine mesh they are as large as the
+     * physics' (three quadratic components on the same nodes). */
+    void
+    set_out_of_core(const bool out_of_core);
+
     /** Solves (dr_psi/dpsi)^T mu = @p rhs at the last solution (the tangent
      * is symmetric), by GMRES on the kept factorization. */
     void
@@ -162,6 +168,7 @@ namespace softopt
     CellMatrixScatter                scatter;
     PETScWrappers::MPI::SparseMatrix mass_matrix;
     std::unique_ptr<DirectSolver>    solver;
+    bool                             out_of_core = false;
     /** (d, psi) of the last solve() while its tangent is not assembled. */
     std::unique_ptr<std::pair<Vector, Vector>> solution;
     double                           volume                 = 0;
