@@ -120,7 +120,8 @@ namespace softopt
                       "false",
                       Patterns::Bool(),
                       "MUMPS keeps the factors on disk instead of in memory "
-                      "(ICNTL(22) = 1), in the directory of the environment "
+                      "(ICNTL(22) = 1; the physics' and the shape filter's), "
+                      "in the directory of the environment "
                       "variable MUMPS_OOC_TMPDIR (default /tmp), and removes "
                       "them at the end (a killed run leaves its mumps_* files "
                       "there). For meshes whose factors do not fit "
