@@ -88,8 +88,7 @@ namespace softopt
     problem->setup_system();
     problem->set_linear_solver(parameters.linear_solver);
     filter.setup(*design, parameters.geometry);
-    filter.set_out_of_core(
-      parameters.linear_solver.out_of_core_for(triangulation->n_global_active_cells()));
+    filter.set_linear_solver(parameters.linear_solver);
     mesh_file = file;
   }
 

@@ -442,11 +442,13 @@ namespace softopt
 
 
   void
-  ShapeFilter::set_out_of_core(const bool on_disk)
+  ShapeFilter::set_linear_solver(const DirectSolver::Parameters &linear_solver)
   {
-    out_of_core = on_disk;
+    Assert(design != nullptr, ExcMessage("ShapeFilter::setup() comes first"));
+    out_of_core = linear_solver.out_of_core_for(
+      design->get_dof_handler().get_triangulation().n_global_active_cells());
     if (solver)
-      solver->set_out_of_core(on_disk);
+      solver->set_out_of_core(out_of_core);
   }
 
 

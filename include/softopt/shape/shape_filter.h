@@ -85,11 +85,13 @@ namespace softopt
     void
     forget_factorization();
 
-    /** Whether the filter's factors go on disk (MUMPS' ICNTL(22)), from
-     * the next factorization on; on a fine mesh they are as large as the
-     * physics' (three quadratic components on the same nodes). */
+    /** Takes the physics' linear solver settings after setup(): whether the
+     * filter's factors go on disk (MUMPS' ICNTL(22)) is decided by the same
+     * rule and this mesh's cell count, from the next factorization on. On a
+     * fine mesh they are as large as the physics' (three quadratic
+     * components on the same nodes). */
     void
-    set_out_of_core(const bool out_of_core);
+    set_linear_solver(const DirectSolver::Parameters &parameters);
 
     /** Solves (dr_psi/dpsi)^T mu = @p rhs at the last solution (the tangent
      * is symmetric), by GMRES on the kept factorization. */
