@@ -246,7 +246,7 @@ namespace softopt
         if (Utilities::MPI::this_mpi_process(comm) == 0)
           std::filesystem::create_directories(out.file("verification"));
         MPI_Barrier(comm);
-        remesh_design(*design.design, mesh, h);
+        const NewMesh new_mesh = remesh_design(*design.design, mesh, h);
         const AnalysisBody fine(settings, comm, mesh);
         auto               solver = settings.linear_solver;
         solver.out_of_core |= settings.verification.out_of_core;
@@ -255,6 +255,8 @@ namespace softopt
               << fine.triangulation->n_global_active_cells() << " tetrahedra, "
               << fine.problem->get_dof_handler().n_dofs()
               << " degrees of freedom):" << std::endl;
+        if (!new_mesh.note().empty())
+          pcout << new_mesh.note() << std::endl;
         const auto [row, solved] =
           analyze(settings, fine, h, out.file("verification/" + name), pcout);
         csv.add_row(csv_row(row));

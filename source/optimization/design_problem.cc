@@ -438,10 +438,18 @@ namespace softopt
 
 
 
+  const NewMesh &
+  DesignProblem::last_new_mesh() const
+  {
+    return new_mesh;
+  }
+
+
+
   unsigned long
   DesignProblem::remesh(DesignIterate &x, const std::string &msh_file, const double mesh_size)
   {
-    remesh_design(*design, msh_file, mesh_size);
+    new_mesh = remesh_design(*design, msh_file, mesh_size);
     // Built beside the old mesh, which stays if anything fails.
     auto old_triangulation = std::move(triangulation);
     auto old_design        = std::move(design);

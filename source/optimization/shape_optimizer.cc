@@ -214,6 +214,8 @@ namespace softopt
                     std::to_string(n_outside) + " new points outside the old "
                     "mesh: the states follow the path from zero")
               << std::endl;
+        if (const std::string note = problem.last_new_mesh().note(); !note.empty())
+          pcout << "  iteration " << k << ": " << note << std::endl;
         return std::nullopt;
       }
     return before;

@@ -3,6 +3,7 @@
 #include <softopt/shape/quadratic_tetrahedron.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -37,5 +38,18 @@ namespace softopt
         largest  = std::max(largest, determinant(J));
       }
     return smallest / largest;
+  }
+
+
+
+  double
+  mean_ratio(const std::array<Point<3>, 4> &p)
+  {
+    const double V = ((p[1] - p[0]) * cross_product_3d(p[2] - p[0], p[3] - p[0])) / 6.;
+    double edges = 0;
+    for (unsigned int a = 0; a < 4; ++a)
+      for (unsigned int b = a + 1; b < 4; ++b)
+        edges += (p[a] - p[b]).norm_square();
+    return V > 0 ? 12. * std::pow(3. * V, 2. / 3.) / edges : V;
   }
 } // namespace softopt

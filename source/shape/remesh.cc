@@ -10,7 +10,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <map>
+#include <sstream>
+#include <stdexcept>
 
 namespace softopt
 {
@@ -228,9 +231,9 @@ namespace softopt
      * renumbers them). Where that would make an element's Jacobian vary by
      * more than a factor 5 (or invert it), or put a midside node nearer to
      * another edge's midpoint than to its own, the element's edges stay
-     * straight.
+     * straight. Returns the worst mean ratio of the tetrahedra's corners.
      */
-    void
+    double
     restore_curved_midpoints(const std::string &file, const Surface &surface)
     {
       double size = 1;
@@ -298,6 +301,11 @@ namespace softopt
       for (const auto &[tag, p] : moved)
         mesh.nodes[tag] = p;
       write_gmsh_mesh(mesh, file);
+
+      double worst = 1;
+      for (const auto &t : tetrahedra)
+        worst = std::min(worst, mean_ratio(nodes(t, position).corners));
+      return worst;
     }
 
 
@@ -331,14 +339,31 @@ namespace softopt
 
 
 
-  void
+  std::string
+  NewMesh::note() const
+  {
+    if (!meshed_twice)
+      return "";
+    std::ostringstream text;
+    text << std::setprecision(2) << "gmsh's HXT left an element of mean ratio "
+         << hxt_worst_quality << "; "
+         << "its Delaunay mesh, worst " << delaunay_worst_quality << ", "
+         << (delaunay ? "is used" : "is no better: HXT's is used");
+    return text.str();
+  }
+
+
+
+  NewMesh
   remesh_design(const DesignConfiguration &design,
                 const std::string         &msh_file,
-                const double               mesh_size)
+                const double               mesh_size,
+                const double               sliver_quality)
   {
     const MPI_Comm comm  = design.get_dof_handler().get_communicator();
     const auto     parts = gathered_faces(design);
-    std::string error;
+    std::string    error;
+    NewMesh        result;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
       try
         {
@@ -353,48 +378,77 @@ namespace softopt
               std::max(1u, static_cast<unsigned int>(std::ceil(mean_edge / mesh_size - 1e-9))) :
               1;
           const auto surface = write_surface(parts, stem + ".surface.msh", n);
-          std::ofstream geo(stem + ".geo");
-          geo << "// softopt: a new mesh of the design inside its boundary\n"
-              << "Merge \"" << std::filesystem::path(stem).filename().string()
-              << ".surface.msh\";\n"
-              << "// HXT: no slivers between the faces of walls one element\n"
-              << "// thick, where the default Delaunay left some; one thread\n"
-              << "// for a reproducible mesh.\n"
-              << "Mesh.Algorithm3D = 10;\n"
-              << "General.NumThreads = 1;\n";
-          geo << "Surface Loop(1) = Surface{:};\n"
-              << "Volume(1) = {1};\n"
-              << "Physical Volume(1) = {1};\n";
-          // The split boundary's edges can be as short as half the size (n
-          // rounds up). gmsh would fill the whole body at their size (the
-          // gripper's schedule mesh at 0.8 mm: 272,152 tetrahedra); the
-          // size grows from theirs at the boundary to mesh_size at 2
-          // mesh_size inside instead (200,434). An abrupt jump to mesh_size
-          // made fewer (149,244) but flat ones, the worst near the remesh
-          // guard's quality of 0.2 (doc/benchmarks.md, session 20).
-          if (mesh_size > 0)
-            geo << "Mesh.MeshSizeMax = " << mesh_size << ";\n"
-                << "Mesh.MeshSizeExtendFromBoundary = 0;\n"
-                << "Field[1] = Distance;\n"
-                << "Field[1].SurfacesList = {Surface{:}};\n"
-                << "Field[2] = Threshold;\n"
-                << "Field[2].InField = 1;\n"
-                << "Field[2].SizeMin = " << std::min(mesh_size, mean_edge / n)
-                << ";\n"
-                << "Field[2].SizeMax = " << mesh_size << ";\n"
-                << "Field[2].DistMin = 0;\n"
-                << "Field[2].DistMax = " << 2 * mesh_size << ";\n"
-                << "Background Field = 2;\n";
-          geo.close();
-          AssertThrow(geo, ExcMessage("Cannot write " + stem + ".geo"));
-          std::filesystem::remove(msh_file); // none of an earlier run
-          const std::string log =
-            run_gmsh({"-3", "-order", "2", "-format", "msh22", stem + ".geo"},
-                     msh_file);
-          if (!log.empty())
-            error = "gmsh could not mesh the design " + log;
-          else
-            restore_curved_midpoints(msh_file, surface);
+
+          // gmsh's 3D algorithm 10 (HXT) or 1 (Delaunay) into @p file.
+          const auto mesh_with = [&](const unsigned int algorithm,
+                                     const std::string &geo_file,
+                                     const std::string &file) {
+            std::ofstream geo(geo_file);
+            geo << "// softopt: a new mesh of the design inside its boundary\n"
+                << "Merge \"" << std::filesystem::path(stem).filename().string()
+                << ".surface.msh\";\n"
+                << "Mesh.Algorithm3D = " << algorithm << ";\n"
+                << "// One thread for a reproducible mesh.\n"
+                << "General.NumThreads = 1;\n";
+            geo << "Surface Loop(1) = Surface{:};\n"
+                << "Volume(1) = {1};\n"
+                << "Physical Volume(1) = {1};\n";
+            // The split boundary's edges can be as short as half the size (n
+            // rounds up). gmsh would fill the whole body at their size (the
+            // gripper's schedule mesh at 0.8 mm: 272,152 tetrahedra); the
+            // size grows from theirs at the boundary to mesh_size at 2
+            // mesh_size inside instead (200,434). An abrupt jump to mesh_size
+            // made fewer (149,244) but flat ones, the worst near the remesh
+            // guard's quality of 0.2 (doc/benchmarks.md, session 20).
+            if (mesh_size > 0)
+              geo << "Mesh.MeshSizeMax = " << mesh_size << ";\n"
+                  << "Mesh.MeshSizeExtendFromBoundary = 0;\n"
+                  << "Field[1] = Distance;\n"
+                  << "Field[1].SurfacesList = {Surface{:}};\n"
+                  << "Field[2] = Threshold;\n"
+                  << "Field[2].InField = 1;\n"
+                  << "Field[2].SizeMin = " << std::min(mesh_size, mean_edge / n)
+                  << ";\n"
+                  << "Field[2].SizeMax = " << mesh_size << ";\n"
+                  << "Field[2].DistMin = 0;\n"
+                  << "Field[2].DistMax = " << 2 * mesh_size << ";\n"
+                  << "Background Field = 2;\n";
+            geo.close();
+            AssertThrow(geo, ExcMessage("Cannot write " + geo_file));
+            std::filesystem::remove(file); // none of an earlier run
+            const std::string log =
+              run_gmsh({"-3", "-order", "2", "-format", "msh22", geo_file}, file);
+            if (!log.empty())
+              throw std::runtime_error("gmsh could not mesh the design " + log);
+            return restore_curved_midpoints(file, surface);
+          };
+
+          // HXT first: the default Delaunay left slivers between the faces
+          // of walls one element thick. HXT in turn can leave a flat
+          // tetrahedron on a large boundary face beside a crease, its
+          // interior node in the face's plane (the contractor's 0.8 mm mesh
+          // of session 38: mean ratio 0.0075, where Delaunay's worst was
+          // 0.21); the optimizer flattens such an element further, and
+          // the remesh guard cannot help, since the mesh itself is below
+          // it. Then Delaunay meshes the design too, and the better worst
+          // element wins.
+          result.worst_quality = mesh_with(10, stem + ".geo", msh_file);
+          if (result.worst_quality < sliver_quality)
+            {
+              const std::string other = stem + ".delaunay.msh";
+              result.meshed_twice      = true;
+              result.hxt_worst_quality = result.worst_quality;
+              const double delaunay   = mesh_with(1, stem + ".delaunay.geo", other);
+              result.delaunay_worst_quality = delaunay;
+              if (delaunay > result.worst_quality)
+                {
+                  std::filesystem::rename(other, msh_file);
+                  result.worst_quality = delaunay;
+                  result.delaunay      = true;
+                }
+              else
+                std::filesystem::remove(other);
+            }
         }
       catch (const std::exception &e)
         {
@@ -402,5 +456,6 @@ namespace softopt
         }
     error = Utilities::MPI::broadcast(comm, error, 0);
     AssertThrow(error.empty(), ExcMessage(error));
+    return Utilities::MPI::broadcast(comm, result, 0);
   }
 } // namespace softopt

@@ -8,6 +8,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <softopt/shape/fictitious_material.h>
+#include <softopt/shape/quadratic_tetrahedron.h>
 #include <softopt/shape/shape_filter.h>
 #include <softopt/solvers/petsc_check.h>
 #include <softopt/solvers/refactorization_rule.h>
@@ -505,8 +506,7 @@ namespace softopt
                      determinant(unit_symmetric_tensor<3>() +
                                  gradient(cell, q, psi_local)));
 
-        // Mean ratio of the tetrahedron through the corner nodes of X:
-        // 12 (3 V)^(2/3) / sum of squared edge lengths, 1 if equilateral.
+        // The tetrahedron through the corner nodes of X.
         std::array<Point<3>, 4> p;
         for (unsigned int i = 0; i < n; ++i)
           {
@@ -514,13 +514,7 @@ namespace softopt
             if (node < 4)
               p[node][c] = X_local[i];
           }
-        const double V = ((p[1] - p[0]) * cross_product_3d(p[2] - p[0], p[3] - p[0])) / 6.;
-        double edges = 0;
-        for (unsigned int a = 0; a < 4; ++a)
-          for (unsigned int b = a + 1; b < 4; ++b)
-            edges += (p[a] - p[b]).norm_square();
-        const double quality =
-          V > 0 ? 12. * std::pow(3. * V, 2. / 3.) / edges : V;
+        const double quality = mean_ratio(p);
         has_cells = true;
         if (quality < result.worst_quality)
           {

@@ -9,6 +9,7 @@
 #include <softopt/optimization/problem_parameters.h>
 #include <softopt/physics/hyperelastic_problem.h>
 #include <softopt/shape/design_configuration.h>
+#include <softopt/shape/remesh.h>
 #include <softopt/shape/shape_filter.h>
 
 #include <map>
@@ -139,6 +140,10 @@ namespace softopt
     unsigned long
     remesh(DesignIterate &x, const std::string &msh_file, const double mesh_size = 0);
 
+    /** What the last remesh() made (remesh_design()). */
+    const NewMesh &
+    last_new_mesh() const;
+
     /** Makes @p x, an iterate on this problem's mesh (a snapshot, a
      * checkpoint read on the mesh it names), this problem's iterate: sets
      * X_o and psi and sets the filter up on X_o. */
@@ -266,6 +271,8 @@ namespace softopt
     MPI_Comm                                      comm;
     /** The mesh file of the current mesh ("": the parameter file's). */
     std::string                                   mesh_file;
+    /** What the last remesh() made. */
+    NewMesh                                       new_mesh;
     std::unique_ptr<parallel::fullydistributed::Triangulation<3>> triangulation;
     std::unique_ptr<DesignConfiguration>          design;
     std::unique_ptr<HyperelasticProblem>          problem;

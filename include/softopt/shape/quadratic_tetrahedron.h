@@ -27,6 +27,13 @@ namespace softopt
    */
   double
   jacobian_ratio(const QuadraticTetrahedron &t);
+
+  /** The mean-ratio quality of the straight tetrahedron through
+   * @p corners: 12 (3 V)^(2/3) / (sum of squared edge lengths), 1 if
+   * equilateral, 0 if flat; the signed volume V if it is negative
+   * (inverted). */
+  double
+  mean_ratio(const std::array<Point<3>, 4> &corners);
 } // namespace softopt
 
 #endif

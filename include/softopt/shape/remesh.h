@@ -7,6 +7,31 @@
 
 namespace softopt
 {
+  /** What remesh_design() made: its worst element and which of gmsh's
+   * algorithms made it. */
+  struct NewMesh
+  {
+    /** Below this mean ratio (the default), an element of HXT's mesh is a
+     * sliver: elsewhere its meshes are at about 0.3 (the gripper's 0.8 mm
+     * mesh 0.28); a sliver it left was at 0.0075. */
+    static constexpr double sliver_quality = 0.1;
+
+    /** The worst mean ratio of the kept mesh's tetrahedra (corners). */
+    double worst_quality = 1;
+    /** Whether Delaunay's mesh was kept. */
+    bool delaunay = false;
+    /** Whether HXT's worst element was below the sliver quality, so that
+     * Delaunay meshed the design too; then the worst element of each. */
+    bool   meshed_twice           = false;
+    double hxt_worst_quality      = 0;
+    double delaunay_worst_quality = 0;
+
+    /** A sentence for the log if HXT's mesh had a sliver (which mesh was
+     * kept, and both worst elements); empty otherwise. */
+    std::string
+    note() const;
+  };
+
   /**
    * A new tetrahedral mesh of the design X = X_o + psi, for when the mesh
    * update of Section 5 would keep elements the design has flattened:
@@ -25,14 +50,20 @@ namespace softopt
    * (not the boundary's throughout): a finer mesh of the same curved body
    * (verification, the mesh-size schedule).
    *
+   * gmsh's HXT algorithm meshes the volume; where it leaves an element of
+   * mean ratio below @p sliver_quality, its Delaunay algorithm
+   * meshes it too, and the mesh with the better worst element is kept.
+   *
    * Collective. Rank 0 writes @p msh_file (gmsh format 2.2) and, beside it,
    * the boundary it was meshed from (.surface.msh, linear) and the gmsh
-   * script (.geo). Throws a message with gmsh's log if gmsh fails.
+   * script (.geo; .delaunay.geo for the second mesh). Throws a message with
+   * gmsh's log if gmsh fails.
    */
-  void
+  NewMesh
   remesh_design(const DesignConfiguration &design,
                 const std::string         &msh_file,
-                const double               mesh_size = 0);
+                const double               mesh_size      = 0,
+                const double               sliver_quality = NewMesh::sliver_quality);
 
   /** The mean length of the straight edges of the design's boundary faces
    * (corner to corner), in mm. Collective. */
