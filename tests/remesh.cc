@@ -16,6 +16,7 @@
 #include <softopt/shape/boundary_faces.h>
 
 #include "body_volume.h"
+#include "random_design.h"
 #include "tests.h"
 
 #include <filesystem>
@@ -56,10 +57,7 @@ main(int argc, char **argv)
   softopt::Settings      settings(SOURCE_DIR "/inputs/sphere_design.prm");
   softopt::DesignProblem problem(settings, MPI_COMM_WORLD);
   problem.add_cavity_volume();
-  softopt::DesignIterate x = problem.initial_iterate();
-  for (const auto i : x.d.locally_owned_elements())
-    x.d(i) = 0.3 * settings.optimization.design_bound * random(i, 5);
-  x.d.compress(VectorOperation::insert);
+  softopt::DesignIterate x = random_design(problem, settings);
   const auto   before         = problem.evaluate(x);
   const double volume_before  = body_volume(problem.design_configuration());
   const auto   boundary_before = boundary(problem.design_configuration());

@@ -16,6 +16,7 @@
 #include <softopt/shape/quadratic_tetrahedron.h>
 #include <softopt/shape/remesh.h>
 
+#include "random_design.h"
 #include "tests.h"
 
 #include <filesystem>
@@ -71,10 +72,7 @@ main(int argc, char **argv)
 
   softopt::Settings      settings(SOURCE_DIR "/inputs/sphere_design.prm");
   softopt::DesignProblem problem(settings, MPI_COMM_WORLD);
-  softopt::DesignIterate x = problem.initial_iterate();
-  for (const auto i : x.d.locally_owned_elements())
-    x.d(i) = 0.3 * settings.optimization.design_bound * random(i, 5);
-  x.d.compress(VectorOperation::insert);
+  softopt::DesignIterate x = random_design(problem, settings);
   problem.evaluate(x);
   const auto &design = problem.design_configuration();
 

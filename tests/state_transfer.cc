@@ -15,6 +15,7 @@
 #include <softopt/app/settings.h>
 #include <softopt/optimization/design_problem.h>
 
+#include "random_design.h"
 #include "tests.h"
 
 using namespace softopt_tests;
@@ -61,10 +62,7 @@ main(int argc, char **argv)
 
   softopt::Settings      settings(SOURCE_DIR "/inputs/sphere_design.prm");
   softopt::DesignProblem problem(settings, MPI_COMM_WORLD);
-  softopt::DesignIterate x = problem.initial_iterate();
-  for (const auto i : x.d.locally_owned_elements())
-    x.d(i) = 0.3 * settings.optimization.design_bound * random(i, 5);
-  x.d.compress(VectorOperation::insert);
+  softopt::DesignIterate x = random_design(problem, settings);
   problem.evaluate(x);
   const auto equilibrium = x.states;
   const auto cells_before =
