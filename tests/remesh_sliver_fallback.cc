@@ -9,6 +9,8 @@
 // above it) and with a sliver quality of 1 (every mesh has an element
 // below 1, so both algorithms mesh it). The reported worst element must be
 // the better of the two and must be that of the file kept, read back.
+// Last, Delaunay is made to fail (a folder stands where its mesh goes):
+// HXT's mesh must be kept, and the log must say so.
 
 #include <softopt/app/settings.h>
 #include <softopt/geometry/gmsh_mesh.h>
@@ -99,4 +101,21 @@ main(int argc, char **argv)
           << "; the log says: " << both.note() << std::endl;
   deallog << "after HXT alone, the log says " << (hxt.note().empty() ? "nothing" : "SOMETHING")
           << std::endl;
+
+  if (Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    {
+      std::filesystem::create_directories("failed.delaunay.msh/in_the_way");
+      std::filesystem::remove("failed.delaunay.log");
+    }
+  MPI_Barrier(MPI_COMM_WORLD);
+  const auto failed = softopt::remesh_design(design, "failed.msh", 0, 1.);
+  deallog << "Delaunay failing: " << (failed.delaunay_failed ? "noticed" : "NOT NOTICED")
+          << ", HXT's mesh " << (failed.delaunay ? "NOT KEPT" : "kept") << ", worst "
+          << (failed.worst_quality == hxt.worst_quality ? "as HXT's" : "NOT AS HXT'S")
+          << "; in the file, error "
+          << below(worst_in_file("failed.msh") - failed.worst_quality, 1e-12)
+          << "; gmsh's message "
+          << (std::filesystem::exists("failed.delaunay.log") && std::filesystem::file_size("failed.delaunay.log") > 0 ? "kept" : "MISSING")
+          << std::endl;
+  deallog << "the log says: " << failed.note() << std::endl;
 }

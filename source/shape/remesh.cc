@@ -346,9 +346,13 @@ namespace softopt
       return "";
     std::ostringstream text;
     text << std::setprecision(2) << "gmsh's HXT left an element of mean ratio "
-         << hxt_worst_quality << "; "
-         << "its Delaunay mesh, worst " << delaunay_worst_quality << ", "
-         << (delaunay ? "is used" : "is no better: HXT's is used");
+         << hxt_worst_quality << "; ";
+    if (delaunay_failed)
+      text << "gmsh's Delaunay failed on the design (its message: the "
+           << ".delaunay.log beside the mesh): HXT's mesh is used";
+    else
+      text << "its Delaunay mesh, worst " << delaunay_worst_quality << ", "
+           << (delaunay ? "is used" : "is no better: HXT's is used");
     return text.str();
   }
 
@@ -438,9 +442,22 @@ namespace softopt
               const std::string other = stem + ".delaunay.msh";
               result.meshed_twice      = true;
               result.hxt_worst_quality = result.worst_quality;
-              const double delaunay   = mesh_with(1, stem + ".delaunay.geo", other);
+              double delaunay = -1;
+              try
+                {
+                  delaunay = mesh_with(1, stem + ".delaunay.geo", other);
+                }
+              catch (const std::exception &e)
+                {
+                  // HXT's mesh is still a mesh of the design: keep it.
+                  result.delaunay_failed = true;
+                  std::ofstream(stem + ".delaunay.log") << e.what() << '\n';
+                }
               result.delaunay_worst_quality = delaunay;
-              if (delaunay > result.worst_quality)
+              std::error_code ignored;
+              if (result.delaunay_failed)
+                std::filesystem::remove_all(other, ignored); // a partial file
+              else if (delaunay > result.worst_quality)
                 {
                   std::filesystem::rename(other, msh_file);
                   result.worst_quality = delaunay;

@@ -25,6 +25,10 @@ namespace softopt
     bool   meshed_twice           = false;
     double hxt_worst_quality      = 0;
     double delaunay_worst_quality = 0;
+    /** Whether gmsh's Delaunay failed on the design, so that HXT's mesh,
+     * sliver and all, was kept (gmsh's message: the .delaunay.log file
+     * beside the mesh). */
+    bool delaunay_failed = false;
 
     /** A sentence for the log if HXT's mesh had a sliver (which mesh was
      * kept, and both worst elements); empty otherwise. */
@@ -52,7 +56,9 @@ namespace softopt
    *
    * gmsh's HXT algorithm meshes the volume; where it leaves an element of
    * mean ratio below @p sliver_quality, its Delaunay algorithm
-   * meshes it too, and the mesh with the better worst element is kept.
+   * meshes it too, and the mesh with the better worst element is kept. If
+   * Delaunay fails there, HXT's mesh is kept (a sliver is better than no
+   * new mesh) and the note says so.
    *
    * Collective. Rank 0 writes @p msh_file (gmsh format 2.2) and, beside it,
    * the boundary it was meshed from (.surface.msh, linear) and the gmsh
