@@ -9,8 +9,10 @@
 #     boxes): the self-intersection row counts the pairs and refuses it.
 #  3. check-design on a finished run checks its design.msh; the sphere's
 #     final analysis has no deformed self-contact.
-#  4. Walls that touch (inputs/slot.geo): the analysis finds the pressure
-#     where the deformed surface first passes through itself.
+#  4. Walls that touch (inputs/slot.geo): check-design measures the slot,
+#     0.4 mm, as the minimum gap (a warning below Minimum gap = 1 mm) and
+#     the wall before it, 0.6 mm; the analysis finds the pressure where the
+#     deformed surface first passes through itself.
 # Usage: castability.sh SOFTOPT_EXECUTABLE SOURCE_DIR
 softopt=$1
 source=$2
@@ -110,6 +112,17 @@ subsection Loading
   set Maximum load increment = 0.05
 end
 PRM
+"$softopt" check-design slot.prm > slot_check.log 2>&1 || { echo "FAIL check-design slot"; cat slot_check.log; exit 1; }
+/usr/bin/python3 - slot <<'PY' || failures=$((failures + 1))
+import csv, sys
+rows = {r["check"]: r for r in csv.DictReader(open(sys.argv[1] + "/castability.csv"))}
+gap, wall = rows["minimum gap"], rows["minimum wall thickness"]
+ok = abs(float(gap["value"]) - 0.4) < 1e-6 and gap["verdict"] == "warning"
+print(("ok  " if ok else "FAIL") + " minimum gap %.6f mm (the slot: 0.4, error < 1e-6), %s below 1 mm" % (float(gap["value"]), gap["verdict"]))
+ok2 = abs(float(wall["value"]) - 0.6) < 1e-6
+print(("ok  " if ok2 else "FAIL") + " minimum wall thickness %.6f mm (the wall before the slot: 0.6, error < 1e-6)" % float(wall["value"]))
+sys.exit(0 if ok and ok2 else 1)
+PY
 "$softopt" analyze slot.prm > slot.log 2>&1 || { echo "FAIL analyze slot"; cat slot.log; exit 1; }
 grep -q "warning: at .* kPa the deformed surface passes through itself" slot.log &&
   echo "ok   the analysis warns where the walls touch" || fail "no contact warning"

@@ -7,6 +7,7 @@
 #include <softopt/shape/wall_thickness.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -27,6 +28,20 @@ namespace softopt
                       "the distance to the opposite surface along the "
                       "inward normal (\"softopt check-design\", and at the "
                       "end of \"optimize\").");
+    prm.declare_entry("Minimum gap",
+                      "1",
+                      Patterns::Double(0),
+                      "Gaps outside the design narrower than this (mm) get "
+                      "a warning: the distance to the next surface along "
+                      "the outward normal, between two lobes or folds a "
+                      "wall of the mold, across the cavity its core. "
+                      "Measured on whole parts only (no symmetry planes).");
+    prm.declare_entry("Sampling size",
+                      "0",
+                      Patterns::Double(0),
+                      "How far apart (mm) the points are where walls and "
+                      "gaps are measured, as in the quantity \"thin "
+                      "walls\" (0: the faces' corner and midside nodes).");
     prm.leave_subsection();
   }
 
@@ -37,6 +52,8 @@ namespace softopt
   {
     prm.enter_subsection("Castability");
     minimum_wall_thickness = prm.get_double("Minimum wall thickness");
+    minimum_gap            = prm.get_double("Minimum gap");
+    sampling_size          = prm.get_double("Sampling size");
     prm.leave_subsection();
   }
 
@@ -88,7 +105,9 @@ namespace softopt
                   comm);
     pcout << "Castability (castability.csv):" << std::endl;
 
-    const auto wall = wall_thickness(design, settings.geometry.symmetry_planes());
+    const auto         mirrors = settings.geometry.symmetry_planes();
+    const unsigned int k = surface_subdivisions(design, settings.castability.sampling_size);
+    const auto         wall = wall_thickness(design, mirrors, false, k);
     on_rank_zero(comm, [&]() { write_wall_thickness_vtu(wall, out.file("wall_thickness.vtu")); });
     const double minimum = settings.castability.minimum_wall_thickness;
     // A ray without an opposite wall: the surface is not closed there.
@@ -106,6 +125,27 @@ namespace softopt
       pcout << "  warning: from " << wall.n_without_opposite << " surface nodes the "
             << "inward ray found no opposite wall (-1 in wall_thickness.vtu): is the "
             << "surface closed?" << std::endl;
+
+    // Gaps: rays outward (on a part cut at symmetry planes they would
+    // cross the open planes, where the mirrored part is not).
+    if (mirrors.empty())
+      {
+        const auto gap = wall_thickness(design, mirrors, true, k);
+        on_rank_zero(comm, [&]() { write_wall_thickness_vtu(gap, out.file("gap.vtu")); });
+        const double at_least = settings.castability.minimum_gap;
+        const bool   narrow   = gap.minimum < at_least;
+        row = {"minimum gap", CsvWriter::format(gap.minimum), "mm"};
+        for (const auto &x : place(gap.where))
+          row.push_back(std::isfinite(gap.minimum) ? x : "");
+        row.push_back(narrow ? "warning" : "ok");
+        csv.add_row(row);
+        if (std::isfinite(gap.minimum))
+          pcout << "  minimum gap " << std::setprecision(4) << gap.minimum << " mm at ("
+                << gap.where << ") mm: " << (narrow ? "warning, below " : "ok, at least ")
+                << at_least << " mm (Minimum gap; the field is in gap.vtu)" << std::endl;
+        else
+          pcout << "  minimum gap: none, every outward ray leaves the part, ok" << std::endl;
+      }
 
     const auto crossing = design_self_intersections(design);
     row = {"self-intersections", std::to_string(crossing.pairs), "triangle pairs"};

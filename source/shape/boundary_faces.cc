@@ -88,78 +88,143 @@ namespace softopt
   }
 
 
-  namespace
+  std::vector<BoundaryFace>
+  gathered_boundary_faces(const DesignConfiguration &design, const Deformation *deformation)
   {
-    /** Corners c and midside nodes m (m[k] opposite corner k) split into
-     * four triangles with the face's orientation. */
-    template <typename T>
-    std::array<std::array<T, 3>, 4>
-    split(const std::array<T, 3> &c, const std::array<T, 3> &m)
-    {
-      return {{{{c[0], m[2], m[1]}},
-               {{c[1], m[0], m[2]}},
-               {{c[2], m[1], m[0]}},
-               {{m[0], m[1], m[2]}}}};
-    }
-  } // namespace
+    // Sent as numbers: 18 coordinates a face, and 18 DoFs and the id.
+    std::vector<double>                  x;
+    std::vector<types::global_dof_index> n;
+    for (const auto &face : locally_owned_boundary_faces(design, deformation))
+      {
+        for (const auto *nodes : {&face.corner, &face.midpoint})
+          for (const auto &p : *nodes)
+            for (unsigned int d = 0; d < 3; ++d)
+              x.push_back(p[d]);
+        for (const auto *nodes : {&face.corner_dofs, &face.midpoint_dofs})
+          for (const auto &dofs : *nodes)
+            n.insert(n.end(), dofs.begin(), dofs.end());
+        n.push_back(face.boundary_id);
+      }
+    const auto comm = design.get_dof_handler().get_communicator();
+    const auto all_x = Utilities::MPI::gather(comm, x, 0);
+    const auto all_n = Utilities::MPI::gather(comm, n, 0);
+    std::vector<BoundaryFace> faces;
+    for (unsigned int rank = 0; rank < all_x.size(); ++rank)
+      for (std::size_t f = 0; 18 * f < all_x[rank].size(); ++f)
+        {
+          const double *p     = &all_x[rank][18 * f];
+          const auto   *dofs  = &all_n[rank][19 * f];
+          BoundaryFace  face;
+          for (unsigned int v = 0; v < 3; ++v)
+            for (unsigned int d = 0; d < 3; ++d)
+              {
+                face.corner[v][d]          = p[3 * v + d];
+                face.midpoint[v][d]        = p[9 + 3 * v + d];
+                face.corner_dofs[v][d]     = dofs[3 * v + d];
+                face.midpoint_dofs[v][d]   = dofs[9 + 3 * v + d];
+              }
+          face.boundary_id = dofs[18];
+          faces.push_back(face);
+        }
+    return faces;
+  }
 
 
 
   std::array<std::array<Point<3>, 3>, 4>
   flat_triangles(const BoundaryFace &face)
   {
-    return split(face.corner, face.midpoint);
+    // Corners c and midside nodes m (m[k] opposite corner k), with the
+    // face's orientation.
+    const auto &c = face.corner;
+    const auto &m = face.midpoint;
+    return {{{{c[0], m[2], m[1]}},
+             {{c[1], m[0], m[2]}},
+             {{c[2], m[1], m[0]}},
+             {{m[0], m[1], m[2]}}}};
   }
 
 
 
-  std::array<std::array<BoundaryFace::NodeDofs, 3>, 4>
-  flat_triangle_dofs(const BoundaryFace &face)
+  std::vector<std::array<SurfacePoint, 3>>
+  curved_triangles(const BoundaryFace &face, const unsigned int k)
   {
-    return split(face.corner_dofs, face.midpoint_dofs);
+    AssertThrow(k > 0, ExcMessage("A face is split into k x k triangles, k > 0."));
+    // The point of barycentric coordinates l / k (l[a]: corner a's), with
+    // the quadratic shape functions N_a = lambda_a (2 lambda_a - 1) of the
+    // corners and N = 4 lambda_a lambda_b of the midpoint between a and b.
+    const auto point = [&](const std::array<unsigned int, 3> &l) {
+      SurfacePoint p;
+      p.weight.fill(0.);
+      for (unsigned int a = 0; a < 3; ++a)
+        if (l[a] == k) // a corner: the node itself
+          {
+            p.x         = face.corner[a];
+            p.weight[a] = 1;
+            return p;
+          }
+      for (unsigned int c = 0; c < 3; ++c)
+        if (l[c] == 0) // on the edge opposite corner c: from its three nodes
+          {
+            unsigned int a = (c + 1) % 3, b = (c + 2) % 3;
+            if (face.corner_dofs[b][0] < face.corner_dofs[a][0])
+              std::swap(a, b);
+            const double la = double(l[a]) / k, lb = double(l[b]) / k;
+            p.weight[a]     = la * (2 * la - 1);
+            p.weight[b]     = lb * (2 * lb - 1);
+            p.weight[3 + c] = 4 * la * lb;
+            for (unsigned int d = 0; d < 3; ++d)
+              p.x[d] = p.weight[a] * face.corner[a][d] + p.weight[b] * face.corner[b][d] +
+                       p.weight[3 + c] * face.midpoint[c][d];
+            return p;
+          }
+      std::array<double, 3> lambda;
+      for (unsigned int a = 0; a < 3; ++a)
+        lambda[a] = double(l[a]) / k;
+      for (unsigned int a = 0; a < 3; ++a)
+        {
+          p.weight[a]     = lambda[a] * (2 * lambda[a] - 1);
+          p.weight[3 + a] = 4 * lambda[(a + 1) % 3] * lambda[(a + 2) % 3];
+          p.x += p.weight[a] * face.corner[a] + p.weight[3 + a] * face.midpoint[a];
+        }
+      return p;
+    };
+    // Point (i, j): i/k of the way to corner 1, j/k to corner 2; the
+    // triangles (i, j) (i + 1, j) (i, j + 1) and (i + 1, j) (i + 1, j + 1)
+    // (i, j + 1) turn as corners 0, 1, 2 do.
+    const auto at = [&](const unsigned int i, const unsigned int j) {
+      return point({{k - i - j, i, j}});
+    };
+    std::vector<std::array<SurfacePoint, 3>> triangles;
+    for (unsigned int j = 0; j < k; ++j)
+      for (unsigned int i = 0; i + j < k; ++i)
+        {
+          triangles.push_back({{at(i, j), at(i + 1, j), at(i, j + 1)}});
+          if (i + j + 1 < k)
+            triangles.push_back({{at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)}});
+        }
+    return triangles;
   }
 
 
 
   std::vector<double>
-  gathered_boundary_triangles(const DesignConfiguration            &design,
-                              std::vector<types::boundary_id>      *boundary_ids,
-                              const Deformation                    *deformation,
-                              std::vector<types::global_dof_index> *dofs)
+  gathered_boundary_triangles(const DesignConfiguration       &design,
+                              std::vector<types::boundary_id> *boundary_ids,
+                              const Deformation               *deformation)
   {
-    const auto          comm = design.get_dof_handler().get_communicator();
-    std::vector<double> local;
-    std::vector<types::boundary_id>      local_ids;
-    std::vector<types::global_dof_index> local_dofs;
-    for (const auto &face : locally_owned_boundary_faces(design, deformation))
-      {
-        for (const auto &t : flat_triangles(face))
-          {
-            local_ids.push_back(face.boundary_id);
-            for (const auto &p : t)
-              for (unsigned int d = 0; d < 3; ++d)
-                local.push_back(p[d]);
-          }
-        if (dofs)
-          for (const auto &t : flat_triangle_dofs(face))
-            for (const auto &node : t)
-              local_dofs.insert(local_dofs.end(), node.begin(), node.end());
-      }
-    std::vector<double> all;
-    for (const auto &part : Utilities::MPI::gather(comm, local, 0))
-      all.insert(all.end(), part.begin(), part.end());
+    std::vector<double> corners;
     if (boundary_ids)
-      {
-        boundary_ids->clear();
-        for (const auto &part : Utilities::MPI::gather(comm, local_ids, 0))
-          boundary_ids->insert(boundary_ids->end(), part.begin(), part.end());
-      }
-    if (dofs)
-      {
-        dofs->clear();
-        for (const auto &part : Utilities::MPI::gather(comm, local_dofs, 0))
-          dofs->insert(dofs->end(), part.begin(), part.end());
-      }
-    return all;
+      boundary_ids->clear();
+    for (const auto &face : gathered_boundary_faces(design, deformation))
+      for (const auto &t : flat_triangles(face))
+        {
+          if (boundary_ids)
+            boundary_ids->push_back(face.boundary_id);
+          for (const auto &p : t)
+            for (unsigned int d = 0; d < 3; ++d)
+              corners.push_back(p[d]);
+        }
+    return corners;
   }
 } // namespace softopt

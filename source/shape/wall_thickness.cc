@@ -11,6 +11,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <set>
 #include <sstream>
@@ -24,32 +25,44 @@ namespace softopt
     using Primitive = CGAL::AABB_triangle_primitive<Kernel, Triangles::const_iterator>;
     using Tree      = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
-    /** The surface of @p corners (9 numbers a triangle) as indexed nodes
-     * and triangles, with the design DoFs @p dofs (9 a triangle) of each
-     * node; shared corners are equal to the last bit. */
+    /** The surface of @p faces, each split into k x k triangles on its
+     * quadratic map (curved_triangles()), as indexed nodes and triangles,
+     * with the design DoFs and weights of each node and the boundary id
+     * of each triangle; points on shared edges are equal to the last bit. */
     void
-    index_surface(const std::vector<double>                  &corners,
-                  const std::vector<types::global_dof_index> &dofs,
-                  WallThickness                              &wall)
+    index_surface(const std::vector<BoundaryFace>  &faces,
+                  const unsigned int                k,
+                  WallThickness                    &wall,
+                  std::vector<types::boundary_id>  &ids)
     {
       std::map<std::array<double, 3>, unsigned int> index;
-      for (std::size_t t = 0; t < corners.size(); t += 9)
+      for (const auto &face : faces)
         {
-          std::array<unsigned int, 3> triangle;
-          for (unsigned int v = 0; v < 3; ++v)
+          const std::array<const BoundaryFace::NodeDofs *, 6> dofs{
+            {&face.corner_dofs[0], &face.corner_dofs[1], &face.corner_dofs[2],
+             &face.midpoint_dofs[0], &face.midpoint_dofs[1], &face.midpoint_dofs[2]}};
+          for (const auto &t : curved_triangles(face, k))
             {
-              const std::array<double, 3> p{
-                {corners[t + 3 * v], corners[t + 3 * v + 1], corners[t + 3 * v + 2]}};
-              const auto [it, added] = index.emplace(p, wall.nodes.size());
-              if (added)
+              std::array<unsigned int, 3> triangle;
+              for (unsigned int v = 0; v < 3; ++v)
                 {
-                  wall.nodes.emplace_back(p[0], p[1], p[2]);
-                  wall.node_dofs.push_back(
-                    {{dofs[t + 3 * v], dofs[t + 3 * v + 1], dofs[t + 3 * v + 2]}});
+                  const auto &p = t[v];
+                  const auto [it, added] =
+                    index.emplace(std::array<double, 3>{{p.x[0], p.x[1], p.x[2]}},
+                                  wall.nodes.size());
+                  if (added)
+                    {
+                      wall.nodes.push_back(p.x);
+                      wall.node_dofs.emplace_back();
+                      for (unsigned int a = 0; a < 6; ++a)
+                        if (p.weight[a] != 0)
+                          wall.node_dofs.back().emplace_back(p.weight[a], *dofs[a]);
+                    }
+                  triangle[v] = it->second;
                 }
-              triangle[v] = it->second;
+              wall.triangles.push_back(triangle);
+              ids.push_back(face.boundary_id);
             }
-          wall.triangles.push_back(triangle);
         }
     }
 
@@ -176,15 +189,39 @@ namespace softopt
 
 
 
+  unsigned int
+  surface_subdivisions(const DesignConfiguration &design, const double sampling_size)
+  {
+    if (sampling_size <= 0)
+      return 2;
+    // The mean length of the boundary faces' edges in the mesh (its
+    // vertices, fixed between mesh updates: k changes only with the mesh).
+    double length = 0, n = 0;
+    for (const auto &cell : design.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f))
+            for (unsigned int l = 0; l < cell->face(f)->n_lines(); ++l)
+              {
+                length += cell->face(f)->line(l)->diameter();
+                n += 1;
+              }
+    const auto comm = design.get_dof_handler().get_communicator();
+    length          = Utilities::MPI::sum(length, comm);
+    n               = Utilities::MPI::sum(n, comm);
+    return std::max(2u, static_cast<unsigned int>(std::ceil(length / n / sampling_size)));
+  }
+
+
+
   WallThickness
   wall_thickness(const DesignConfiguration          &design,
                  const std::set<types::boundary_id> &mirrors,
-                 const bool                          outward)
+                 const bool                          outward,
+                 const unsigned int                  subdivisions)
   {
-    const auto                      comm = design.get_dof_handler().get_communicator();
-    std::vector<types::boundary_id> ids;
-    std::vector<types::global_dof_index> dofs;
-    const auto    corners = gathered_boundary_triangles(design, &ids, nullptr, &dofs); // design.stl's
+    const auto    comm  = design.get_dof_handler().get_communicator();
+    const auto    faces = gathered_boundary_faces(design);
     WallThickness wall;
     wall.outward = outward;
     std::string   error;
@@ -192,7 +229,8 @@ namespace softopt
       {
         try
           {
-            index_surface(corners, dofs, wall);
+            std::vector<types::boundary_id> ids;
+            index_surface(faces, subdivisions, wall, ids);
             shoot_rays(wall, ids, mirrors);
           }
         catch (const std::exception &e)
@@ -291,8 +329,9 @@ namespace softopt
     vtu << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
     for (std::size_t t = 0; t < wall.triangles.size(); ++t)
       vtu << "5\n";
-    vtu << "</DataArray>\n</Cells>\n<PointData Scalars=\"wall_thickness_mm\">\n"
-        << "<DataArray type=\"Float64\" Name=\"wall_thickness_mm\" format=\"ascii\">\n";
+    const std::string name = wall.outward ? "gap_mm" : "wall_thickness_mm";
+    vtu << "</DataArray>\n</Cells>\n<PointData Scalars=\"" << name << "\">\n"
+        << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
     for (const double t : wall.thickness)
       vtu << (std::isfinite(t) ? t : -1.) << '\n'; // -1: no opposite wall found
     vtu << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";

@@ -25,12 +25,18 @@ namespace softopt
 
     /** Walls thinner than this (mm) get a warning. */
     double minimum_wall_thickness = 1;
+    /** Gaps outside the part narrower than this (mm) get a warning. */
+    double minimum_gap = 1;
+    /** How far apart the points of the surface are measured (mm; 0: the
+     * faces' nodes; surface_subdivisions()). */
+    double sampling_size = 0;
   };
 
   /**
    * The castability checks of a design (issue 22): the minimum wall
    * thickness (wall_thickness(), a warning below "Minimum wall thickness",
-   * and wall_thickness.vtu to look at in ParaView) and the
+   * and wall_thickness.vtu to look at in ParaView), the minimum gap
+   * outside a whole part (a warning below "Minimum gap", gap.vtu) and the
    * self-intersections of its surface (refused if any). Writes
    * castability.csv (check,value,unit,x_mm,y_mm,z_mm,verdict) into @p out
    * and prints one line per check. Collective.

@@ -16,8 +16,9 @@ namespace softopt
   /** The thickness of the body's walls at the nodes of its surface. */
   struct WallThickness
   {
-    /** The corners of the surface triangles (design.stl's: four flat
-     * triangles per quadratic face), each once, in mm. */
+    /** The corners of the surface triangles, each once, in mm: points of
+     * the quadratic faces, k x k flat triangles a face (k = 2: design.stl's
+     * four triangles at its nodes). */
     std::vector<Point<3>> nodes;
     /** The surface triangles, three indices into nodes each, outward. */
     std::vector<std::array<unsigned int, 3>> triangles;
@@ -38,8 +39,10 @@ namespace softopt
      * part) instead of the inward one (its walls). */
     bool outward = false;
 
-    /** The design DoFs of each node. */
-    std::vector<BoundaryFace::NodeDofs> node_dofs;
+    /** Of each node, the design DoFs (x, y, z) of the mesh nodes it is
+     * made of with their weights: node = sum of weight * mesh node (one
+     * mesh node, weight 1, at the corners and midside nodes of a face). */
+    std::vector<std::vector<std::pair<double, BoundaryFace::NodeDofs>>> node_dofs;
 
     /** How each ray went: the triangles around each node, which
      * triangles lie on a symmetry plane, the triangles' unit normals, and
@@ -69,13 +72,24 @@ namespace softopt
    * node of its spherical surfaces. With @p outward the rays go along the
    * outward normal instead: the gap to the next surface outside the part
    * (between two folds of a bellows: a wall of the mold; across the
-   * cavity: its core), infinite where the ray leaves. Collective; the result is on rank 0
-   * (minimum and where on every rank).
+   * cavity: its core), infinite where the ray leaves. The surface is each
+   * quadratic face split into @p subdivisions^2 flat triangles on its
+   * curved map (curved_triangles()); 2: at the face's nodes, which on a
+   * coarse mesh lie a millimetre apart and miss narrower slots.
+   * Collective; the result is on rank 0 (minimum and where on every rank).
    */
   WallThickness
   wall_thickness(const DesignConfiguration          &design,
                  const std::set<types::boundary_id> &mirrors,
-                 const bool                          outward = false);
+                 const bool                          outward      = false,
+                 const unsigned int                  subdivisions = 2);
+
+  /** The subdivisions k of wall_thickness() that sample the surface
+   * @p sampling_size mm apart or closer: the mean edge length of the
+   * mesh's boundary faces over @p sampling_size, rounded up, at least 2
+   * (2 also for @p sampling_size 0: the faces' nodes). Collective. */
+  unsigned int
+  surface_subdivisions(const DesignConfiguration &design, const double sampling_size);
 
   /**
    * The derivative of @p wall's thickness at node @p i with respect to the
@@ -92,7 +106,7 @@ namespace softopt
   thickness_gradient(const WallThickness &wall, const unsigned int i);
 
   /** Writes @p wall as a ParaView surface (.vtu) with the point field
-   * wall_thickness_mm into @p file (rank 0's call writes). */
+   * wall_thickness_mm (gap_mm for outward rays) into @p file (rank 0's call writes). */
   void
   write_wall_thickness_vtu(const WallThickness &wall, const std::string &file);
 } // namespace softopt

@@ -38,7 +38,9 @@ namespace softopt
      * surface is smooth (smooth_at(); a node passing 30 degrees changes N,
      * a small jump that MMA takes as it comes), with t_i the wall
      * thickness at node i (the ray along the inward normal to the opposite
-     * surface, castability's measure) and t_min the entry "Minimum
+     * surface, castability's measure; the nodes: points of the curved
+     * faces "Sampling size" apart, their corner and midside nodes by
+     * default) and t_min the entry "Minimum
      * thickness". Nodes whose ray reflects at a symmetry plane or runs
      * along a triangle add nothing (their length has no derivative). Q is
      * 0 while every wall is at least t_min thick and grows smoothly
@@ -71,6 +73,19 @@ namespace softopt
                           "which a node counts too (mm; 0: gaps are not "
                           "measured). Gaps that close make the surface "
                           "intersect itself, a design that is refused.");
+        prm.declare_entry("Sampling size",
+                          "0",
+                          Patterns::Double(0),
+                          "thin walls: how far apart (mm) the points are "
+                          "where walls and gaps are measured: each quadratic "
+                          "boundary face is split into k x k triangles on its "
+                          "curved surface, k the mean boundary edge of the "
+                          "mesh over this, rounded up, at least 2 (0: k = 2, "
+                          "the faces' corner and midside nodes). A coarse "
+                          "mesh's nodes lie a millimetre apart and miss the "
+                          "narrow slots a fine mesh shows: sample at least as "
+                          "finely as the nodes of the run's finest mesh (half "
+                          "its element size apart).");
       }
 
       ThinWalls(ParameterHandler &prm, const InputFile &input, const std::string &subsection,
@@ -78,6 +93,7 @@ namespace softopt
         : Quantity({})
         , minimum(prm.get_double("Minimum thickness"))
         , minimum_gap(prm.get_double("Minimum gap"))
+        , sampling_size(prm.get_double("Sampling size"))
       {
         AssertThrow(minimum > 0,
                     ExcMessage(input.where(subsection, "Minimum thickness") +
@@ -121,17 +137,20 @@ namespace softopt
                 continue;
               // dQ/dt_i = -2 shortfall / (n t_min)
               const double dQ_dt = -2 * shortfall / (n * at_least);
+              // A sample point is sum_a N_a X_a of its face's nodes a.
               for (const auto &[node, dt_dx] : thickness_gradient(wall, i))
-                for (unsigned int c = 0; c < 3; ++c)
-                  {
-                    dofs.push_back(wall.node_dofs[node][c]);
-                    d_dX.push_back(dQ_dt * dt_dx[c]);
-                  }
+                for (const auto &[N_a, dofs_a] : wall.node_dofs[node])
+                  for (unsigned int c = 0; c < 3; ++c)
+                    {
+                      dofs.push_back(dofs_a[c]);
+                      d_dX.push_back(dQ_dt * N_a * dt_dx[c]);
+                    }
             }
         };
-        add(wall_thickness(design, mirrors), minimum);
+        const unsigned int k = surface_subdivisions(design, sampling_size);
+        add(wall_thickness(design, mirrors, false, k), minimum);
         if (minimum_gap > 0)
-          add(wall_thickness(design, mirrors, true), minimum_gap);
+          add(wall_thickness(design, mirrors, true, k), minimum_gap);
         if (derivatives != nullptr)
           {
             derivatives->d_da.clear();
@@ -146,6 +165,7 @@ namespace softopt
     private:
       const double minimum;
       const double minimum_gap;
+      const double sampling_size;
     };
   } // namespace
 
