@@ -2,6 +2,9 @@
 // quadratic boundary face split k x k on its curved map (curved_triangles()),
 // on the actuator of Table I at 4 mm moved 0.2 mm off its initial design
 // along a random direction:
+// - the sample points are the design's mapping (MappingFEField) at the
+//   lattice points (i, j)/k of each face's reference triangle, k = 3: the
+//   quadratic shape functions and their nodes are the mapping's;
 // - the sampled surface is closed for k = 2, 3, 4: every edge lies in two
 //   triangles that run along it in opposite directions (the points on
 //   shared edges are equal to the last bit from both faces), its Euler
@@ -18,6 +21,7 @@
 
 #include <softopt/app/analysis.h>
 #include <softopt/app/settings.h>
+#include <softopt/shape/boundary_faces.h>
 #include <softopt/shape/wall_thickness.h>
 
 #include "tests.h"
@@ -72,6 +76,44 @@ main(int argc, char **argv)
     design.set_shape_field(psi);
   };
   move(0);
+
+  {
+    // Face f's vertex v is cell vertex w(v); the lattice point of
+    // barycentric coordinates l/k in the face's vertices lies at
+    // sum_v l_v/k xi_w(v) in the cell's reference tetrahedron.
+    const unsigned int k     = 3;
+    const auto         faces = softopt::locally_owned_boundary_faces(design);
+    std::size_t        next  = 0;
+    double             worst = 0;
+    for (const auto &cell : design.get_dof_handler().active_cell_iterators())
+      if (cell->is_locally_owned() && cell->at_boundary())
+        for (const unsigned int f : cell->face_indices())
+          if (cell->at_boundary(f))
+            {
+              std::vector<Point<3>> samples;
+              for (const auto &t : softopt::curved_triangles(faces[next++], k))
+                for (const auto &p : t)
+                  samples.push_back(p.x);
+              std::array<Point<3>, 3> xi;
+              for (unsigned int v = 0; v < 3; ++v)
+                for (const unsigned int w : cell->vertex_indices())
+                  if (cell->vertex_index(w) == cell->face(f)->vertex_index(v))
+                    xi[v] = cell->reference_cell().template vertex<3>(w);
+              for (unsigned int i = 0; i <= k; ++i)
+                for (unsigned int j = 0; i + j <= k; ++j)
+                  {
+                    const Point<3> unit = (double(k - i - j) * xi[0] + double(i) * xi[1] +
+                                           double(j) * xi[2]) / double(k);
+                    const Point<3> x = design.get_mapping().transform_unit_to_real_cell(cell, unit);
+                    double nearest = std::numeric_limits<double>::max();
+                    for (const auto &s : samples)
+                      nearest = std::min(nearest, s.distance(x));
+                    worst = std::max(worst, nearest);
+                  }
+            }
+    deallog << "faces split 3 x 3: largest distance of the mapping's lattice points to the samples "
+            << below(Utilities::MPI::max(worst, comm), 1e-10) << " mm" << std::endl;
+  }
 
   for (const unsigned int k : {2u, 3u, 4u})
     {

@@ -70,7 +70,10 @@ main(int argc, char **argv)
         error.push_back(Utilities::MPI::broadcast(MPI_COMM_WORLD, worst, 0));
         deallog << "sphere octant, faces split " << k << " x " << k << " ("
                 << Utilities::MPI::broadcast(MPI_COMM_WORLD, wall.nodes.size(), 0)
-                << " points): largest |t - (B - A)| " << below(error.back(), 0.01) << std::endl;
+                << " points): largest |t - (B - A)| " << below(error.back(), 0.01)
+                << "; rays without an opposite wall: "
+                << Utilities::MPI::broadcast(MPI_COMM_WORLD, wall.n_without_opposite, 0)
+                << (wall.n_without_opposite == 0 ? " (= 0)" : " (NOT 0)") << std::endl;
       }
     // Against the spacing of the points, h / k.
     deallog << "the error falls with the spacing: " << rate(error[0], error[1], 1. / 2, 1. / 4, 1.5)

@@ -134,7 +134,7 @@ namespace softopt
         on_rank_zero(comm, [&]() { write_wall_thickness_vtu(gap, out.file("gap.vtu")); });
         const double at_least = settings.castability.minimum_gap;
         const bool   narrow   = gap.minimum < at_least;
-        row = {"minimum gap", CsvWriter::format(gap.minimum), "mm"};
+        row = {"minimum gap", std::isfinite(gap.minimum) ? CsvWriter::format(gap.minimum) : "", "mm"};
         for (const auto &x : place(gap.where))
           row.push_back(std::isfinite(gap.minimum) ? x : "");
         row.push_back(narrow ? "warning" : "ok");
@@ -145,6 +145,11 @@ namespace softopt
                 << at_least << " mm (Minimum gap; the field is in gap.vtu)" << std::endl;
         else
           pcout << "  minimum gap: none, every outward ray leaves the part, ok" << std::endl;
+      }
+    else
+      {
+        csv.add_row({"minimum gap", "", "mm", "", "", "", "not measured"});
+        pcout << "  minimum gap: not measured, the part is cut at symmetry planes" << std::endl;
       }
 
     const auto crossing = design_self_intersections(design);

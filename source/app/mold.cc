@@ -190,7 +190,8 @@ namespace softopt
                 ExcMessage("No mold for " + which + ": its surface intersects itself (" +
                            std::to_string(crossing.pairs) + " pairs of triangles, one near " +
                            place(crossing.where) + "); it cannot be cast."));
-    const auto   wall    = wall_thickness(*body.design, {});
+    const auto   wall    = wall_thickness(
+      *body.design, {}, false, surface_subdivisions(*body.design, settings.castability.sampling_size));
     const double minimum = settings.castability.minimum_wall_thickness;
     AssertThrow(wall.minimum >= minimum,
                 ExcMessage("No mold for " + which + ": its wall is " +

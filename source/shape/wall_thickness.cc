@@ -195,7 +195,7 @@ namespace softopt
     if (sampling_size <= 0)
       return 2;
     // The mean length of the boundary faces' edges in the mesh (its
-    // vertices, fixed between mesh updates: k changes only with the mesh).
+    // vertices, which a new mesh changes and the design does not).
     double length = 0, n = 0;
     for (const auto &cell : design.get_dof_handler().active_cell_iterators())
       if (cell->is_locally_owned() && cell->at_boundary())
@@ -209,7 +209,14 @@ namespace softopt
     const auto comm = design.get_dof_handler().get_communicator();
     length          = Utilities::MPI::sum(length, comm);
     n               = Utilities::MPI::sum(n, comm);
-    return std::max(2u, static_cast<unsigned int>(std::ceil(length / n / sampling_size)));
+    const double k = std::ceil(length / n / sampling_size);
+    AssertThrow(k <= 64,
+                ExcMessage("A sampling size of " + std::to_string(sampling_size) +
+                           " mm splits each face of this mesh (mean boundary edge " +
+                           std::to_string(length / n) + " mm) into " + std::to_string(k) +
+                           " x " + std::to_string(k) + " triangles: at most 64 x 64. "
+                           "Choose a larger Sampling size."));
+    return std::max(2u, static_cast<unsigned int>(k));
   }
 
 
@@ -333,7 +340,7 @@ namespace softopt
     vtu << "</DataArray>\n</Cells>\n<PointData Scalars=\"" << name << "\">\n"
         << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
     for (const double t : wall.thickness)
-      vtu << (std::isfinite(t) ? t : -1.) << '\n'; // -1: no opposite wall found
+      vtu << (std::isfinite(t) ? t : -1.) << '\n'; // -1: no opposite surface (a gap ray leaves)
     vtu << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
     write_whole_file(file, vtu.str());
   }

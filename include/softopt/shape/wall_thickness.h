@@ -85,9 +85,12 @@ namespace softopt
                  const unsigned int                  subdivisions = 2);
 
   /** The subdivisions k of wall_thickness() that sample the surface
-   * @p sampling_size mm apart or closer: the mean edge length of the
-   * mesh's boundary faces over @p sampling_size, rounded up, at least 2
-   * (2 also for @p sampling_size 0: the faces' nodes). Collective. */
+   * about @p sampling_size mm apart: the mean edge length of the mesh's
+   * boundary faces over @p sampling_size, rounded up, at least 2 (2 also
+   * for @p sampling_size 0: the faces' nodes); faces with longer edges
+   * than the mean are sampled coarser. From the triangulation's vertices,
+   * so k changes only with a new mesh, not with the design. At most 64
+   * (an error above). Collective. */
   unsigned int
   surface_subdivisions(const DesignConfiguration &design, const double sampling_size);
 
