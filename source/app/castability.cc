@@ -10,7 +10,9 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <set>
+#include <tuple>
 #include <iomanip>
 
 namespace softopt
@@ -107,7 +109,15 @@ namespace softopt
 
     const auto         mirrors = settings.geometry.symmetry_planes();
     const unsigned int k = surface_subdivisions(design, settings.castability.sampling_size);
-    const auto         wall = wall_thickness(design, mirrors, false, k);
+    // Gaps: rays outward, on whole parts only (on a part cut at symmetry
+    // planes they would cross the open planes, where the mirrored part is
+    // not).
+    WallThickness                wall;
+    std::optional<WallThickness> gap;
+    if (mirrors.empty())
+      std::tie(wall, gap) = walls_and_gaps(design, k);
+    else
+      wall = wall_thickness(design, mirrors, false, k);
     on_rank_zero(comm, [&]() { write_wall_thickness_vtu(wall, out.file("wall_thickness.vtu")); });
     const double minimum = settings.castability.minimum_wall_thickness;
     // A ray without an opposite wall: the surface is not closed there.
@@ -126,22 +136,19 @@ namespace softopt
             << "inward ray found no opposite wall (-1 in wall_thickness.vtu): is the "
             << "surface closed?" << std::endl;
 
-    // Gaps: rays outward (on a part cut at symmetry planes they would
-    // cross the open planes, where the mirrored part is not).
-    if (mirrors.empty())
+    if (gap)
       {
-        const auto gap = wall_thickness(design, mirrors, true, k);
-        on_rank_zero(comm, [&]() { write_wall_thickness_vtu(gap, out.file("gap.vtu")); });
+        on_rank_zero(comm, [&]() { write_wall_thickness_vtu(*gap, out.file("gap.vtu")); });
         const double at_least = settings.castability.minimum_gap;
-        const bool   narrow   = gap.minimum < at_least;
-        row = {"minimum gap", std::isfinite(gap.minimum) ? CsvWriter::format(gap.minimum) : "", "mm"};
-        for (const auto &x : place(gap.where))
-          row.push_back(std::isfinite(gap.minimum) ? x : "");
+        const bool   narrow   = gap->minimum < at_least;
+        row = {"minimum gap", std::isfinite(gap->minimum) ? CsvWriter::format(gap->minimum) : "", "mm"};
+        for (const auto &x : place(gap->where))
+          row.push_back(std::isfinite(gap->minimum) ? x : "");
         row.push_back(narrow ? "warning" : "ok");
         csv.add_row(row);
-        if (std::isfinite(gap.minimum))
-          pcout << "  minimum gap " << std::setprecision(4) << gap.minimum << " mm at ("
-                << gap.where << ") mm: " << (narrow ? "warning, below " : "ok, at least ")
+        if (std::isfinite(gap->minimum))
+          pcout << "  minimum gap " << std::setprecision(4) << gap->minimum << " mm at ("
+                << gap->where << ") mm: " << (narrow ? "warning, below " : "ok, at least ")
                 << at_least << " mm (Minimum gap; the field is in gap.vtu)" << std::endl;
         else
           pcout << "  minimum gap: none, every outward ray leaves the part, ok" << std::endl;

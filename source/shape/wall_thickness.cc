@@ -66,66 +66,100 @@ namespace softopt
         }
     }
 
-    /** The thickness at every node of the part's surface: the path along
-     * the inward normal to the first triangle of the part's surface, not
-     * one of the node's own. A mirror plane (a symmetry boundary, boundary
-     * ids @p mirrors) is a cut: the body goes on beyond it. No ray starts
-     * on one; a node on its rim takes the normal projected onto the plane
-     * (the whole body's normal there, by symmetry) and its ray ignores
-     * that plane; a ray that meets a plane is reflected and goes on. */
-    void
-    shoot_rays(WallThickness                         &wall,
-               const std::vector<types::boundary_id> &ids,
-               const std::set<types::boundary_id>    &mirrors)
+    /** What every ray shoots at, built once for the walls and the gaps:
+     * the triangles in CGAL's AABB tree, the area-weighted outward normal
+     * at each node (of its triangles off the mirror planes) and the
+     * triangles of each mirror plane. Fills the rays' shared fields of
+     * @p wall: around, on_mirror, unit_normal. Not copied or moved: the
+     * tree points into the triangles. */
+    struct Targets
     {
-      const auto point = [&](const Point<3> &p) { return Kernel::Point_3(p[0], p[1], p[2]); };
-      const auto is_mirror = [&](const unsigned int t) { return mirrors.count(ids[t]) > 0; };
-      Triangles                                                triangles;
-      auto                                                    &unit_normal = wall.unit_normal;
-      std::vector<Tensor<1, 3>>                                normal(wall.nodes.size());
-      auto                                                    &around = wall.around;
-      around.assign(wall.nodes.size(), {});
-      std::map<types::boundary_id, std::vector<unsigned int>> on_plane; // triangles per mirror
-      for (unsigned int t = 0; t < wall.triangles.size(); ++t)
-        wall.on_mirror.push_back(is_mirror(t));
+      Targets(WallThickness                         &wall,
+              const std::vector<types::boundary_id> &ids,
+              const std::set<types::boundary_id>    &mirrors)
+        : ids(ids)
+        , mirrors(mirrors)
+        , normal(wall.nodes.size())
+      {
+        wall.around.assign(wall.nodes.size(), {});
+        for (unsigned int t = 0; t < wall.triangles.size(); ++t)
+          {
+            const auto &[a, b, c] = wall.triangles[t];
+            triangles.emplace_back(point(wall.nodes[a]), point(wall.nodes[b]), point(wall.nodes[c]));
+            // Area-weighted outward normal (counter-clockwise from outside).
+            const Tensor<1, 3> n =
+              cross_product_3d(wall.nodes[b] - wall.nodes[a], wall.nodes[c] - wall.nodes[a]);
+            wall.unit_normal.push_back(n / n.norm());
+            wall.on_mirror.push_back(is_mirror(t));
+            if (is_mirror(t))
+              on_plane[ids[t]].push_back(t);
+            for (const unsigned int v : wall.triangles[t])
+              {
+                if (!is_mirror(t))
+                  normal[v] += n;
+                wall.around[v].push_back(t);
+              }
+          }
+        tree.insert(triangles.begin(), triangles.end());
+        tree.build();
+      }
+      Targets(const Targets &) = delete;
+
+      static Kernel::Point_3
+      point(const Point<3> &p)
+      {
+        return Kernel::Point_3(p[0], p[1], p[2]);
+      }
+
+      bool
+      is_mirror(const unsigned int t) const
+      {
+        return mirrors.count(ids[t]) > 0;
+      }
+
+      const std::vector<types::boundary_id>                  &ids;
+      const std::set<types::boundary_id>                     &mirrors;
+      Triangles                                               triangles;
+      Tree                                                    tree;
+      std::vector<Tensor<1, 3>>                               normal;
+      std::map<types::boundary_id, std::vector<unsigned int>> on_plane;
+    };
+
+    /** The thickness at every node of the part's surface: the path along
+     * the inward normal (outward with wall.outward) to the first triangle
+     * of the part's surface, not one of the node's own. A mirror plane (a
+     * symmetry boundary) is a cut: the body goes on beyond it. No ray
+     * starts on one; a node on its rim takes the normal projected onto the
+     * plane (the whole body's normal there, by symmetry) and its ray
+     * ignores that plane; a ray that meets a plane is reflected and goes
+     * on. */
+    void
+    shoot_rays(WallThickness &wall, const Targets &targets)
+    {
+      const auto &triangles = targets.triangles;
+      const auto  is_mirror = [&](const unsigned int t) { return targets.is_mirror(t); };
+      const auto &unit_normal = wall.unit_normal;
       wall.reflections.assign(wall.nodes.size(), {});
       wall.hit.assign(wall.nodes.size(), WallThickness::none);
       wall.differentiable.assign(wall.nodes.size(), false);
-      for (unsigned int t = 0; t < wall.triangles.size(); ++t)
-        {
-          const auto &[a, b, c] = wall.triangles[t];
-          triangles.emplace_back(point(wall.nodes[a]), point(wall.nodes[b]), point(wall.nodes[c]));
-          // Area-weighted outward normal (counter-clockwise from outside).
-          const Tensor<1, 3> n =
-            cross_product_3d(wall.nodes[b] - wall.nodes[a], wall.nodes[c] - wall.nodes[a]);
-          unit_normal.push_back(n / n.norm());
-          if (is_mirror(t))
-            on_plane[ids[t]].push_back(t);
-          for (const unsigned int v : wall.triangles[t])
-            {
-              if (!is_mirror(t))
-                normal[v] += n;
-              around[v].push_back(t);
-            }
-        }
-      Tree tree(triangles.begin(), triangles.end());
-
       wall.thickness.assign(wall.nodes.size(), std::numeric_limits<double>::infinity());
       for (unsigned int i = 0; i < wall.nodes.size(); ++i)
         {
-          if (normal[i].norm() == 0) // on mirror planes only: inside the body
+          Tensor<1, 3> normal = targets.normal[i];
+          if (normal.norm() == 0) // on mirror planes only: inside the body
             continue;
-          std::vector<unsigned int> skip = around[i];
+          std::vector<unsigned int> skip = wall.around[i];
           Tensor<1, 3>              into_body; // away from the planes the node is on
-          for (const unsigned int t : around[i])
+          for (const unsigned int t : wall.around[i])
             if (is_mirror(t))
               {
-                normal[i] -= (normal[i] * unit_normal[t]) * unit_normal[t];
+                normal -= (normal * unit_normal[t]) * unit_normal[t];
                 into_body -= unit_normal[t];
-                skip.insert(skip.end(), on_plane[ids[t]].begin(), on_plane[ids[t]].end());
+                const auto &plane = targets.on_plane.at(targets.ids[t]);
+                skip.insert(skip.end(), plane.begin(), plane.end());
               }
           Point<3>     from      = wall.nodes[i];
-          Tensor<1, 3> direction = (wall.outward ? 1. : -1.) * normal[i] / normal[i].norm();
+          Tensor<1, 3> direction = (wall.outward ? 1. : -1.) * normal / normal.norm();
           // A ray exactly in a plane runs along the faces of the AABB boxes,
           // where CGAL's slab test is undecided: tilt it into the body by
           // 1e-6 rad, which changes the thickness by 1e-12 relative.
@@ -134,16 +168,16 @@ namespace softopt
               direction += 1e-6 * into_body / into_body.norm();
               direction /= direction.norm();
             }
-          double       length    = 0;
-          for (unsigned int reflection = 0; reflection <= mirrors.size(); ++reflection)
+          double length = 0;
+          for (unsigned int reflection = 0; reflection <= targets.mirrors.size(); ++reflection)
             {
-              const Kernel::Ray_3 ray(point(from),
+              const Kernel::Ray_3 ray(Targets::point(from),
                                       Kernel::Vector_3(direction[0], direction[1], direction[2]));
               std::sort(skip.begin(), skip.end());
               const auto own = [&](const Triangles::const_iterator &id) {
                 return std::binary_search(skip.begin(), skip.end(), id - triangles.begin());
               };
-              const auto hit = tree.first_intersection(ray, own);
+              const auto hit = targets.tree.first_intersection(ray, own);
               if (!hit)
                 break;
               Point<3> at;
@@ -174,7 +208,8 @@ namespace softopt
               // Reflected: it leaves that plane and cannot meet it again.
               direction -= 2 * (direction * unit_normal[t]) * unit_normal[t];
               from = at;
-              skip.insert(skip.end(), on_plane[ids[t]].begin(), on_plane[ids[t]].end());
+              const auto &plane = targets.on_plane.at(targets.ids[t]);
+              skip.insert(skip.end(), plane.begin(), plane.end());
             }
           if (wall.thickness[i] < wall.minimum)
             {
@@ -184,6 +219,51 @@ namespace softopt
           else if (!std::isfinite(wall.thickness[i]))
             ++wall.n_without_opposite;
         }
+    }
+
+    /** wall_thickness() for each direction of @p outward on one sampled
+     * surface and one tree. */
+    std::vector<WallThickness>
+    measure(const DesignConfiguration          &design,
+            const std::set<types::boundary_id> &mirrors,
+            const std::vector<bool>            &outward,
+            const unsigned int                  subdivisions)
+    {
+      const auto                 comm  = design.get_dof_handler().get_communicator();
+      const auto                 faces = gathered_boundary_faces(design);
+      std::vector<WallThickness> walls(outward.size());
+      std::string                error;
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        {
+          try
+            {
+              WallThickness                   surface;
+              std::vector<types::boundary_id> ids;
+              index_surface(faces, subdivisions, surface, ids);
+              const Targets targets(surface, ids, mirrors);
+              for (unsigned int d = 0; d < outward.size(); ++d)
+                {
+                  walls[d]         = surface;
+                  walls[d].outward = outward[d];
+                  shoot_rays(walls[d], targets);
+                }
+            }
+          catch (const std::exception &e)
+            {
+              error = std::string("The wall thickness could not be measured: ") + e.what();
+            }
+        }
+      error = Utilities::MPI::broadcast(comm, error, 0); // thrown on every rank
+      AssertThrow(error.empty(), ExcMessage(error));
+      for (unsigned int d = 0; d < outward.size(); ++d)
+        {
+          auto &wall              = walls[d];
+          wall.outward            = outward[d];
+          wall.minimum            = Utilities::MPI::broadcast(comm, wall.minimum, 0);
+          wall.where              = Utilities::MPI::broadcast(comm, wall.where, 0);
+          wall.n_without_opposite = Utilities::MPI::broadcast(comm, wall.n_without_opposite, 0);
+        }
+      return walls;
     }
   } // namespace
 
@@ -227,30 +307,16 @@ namespace softopt
                  const bool                          outward,
                  const unsigned int                  subdivisions)
   {
-    const auto    comm  = design.get_dof_handler().get_communicator();
-    const auto    faces = gathered_boundary_faces(design);
-    WallThickness wall;
-    wall.outward = outward;
-    std::string   error;
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      {
-        try
-          {
-            std::vector<types::boundary_id> ids;
-            index_surface(faces, subdivisions, wall, ids);
-            shoot_rays(wall, ids, mirrors);
-          }
-        catch (const std::exception &e)
-          {
-            error = std::string("The wall thickness could not be measured: ") + e.what();
-          }
-      }
-    error = Utilities::MPI::broadcast(comm, error, 0); // thrown on every rank
-    AssertThrow(error.empty(), ExcMessage(error));
-    wall.minimum            = Utilities::MPI::broadcast(comm, wall.minimum, 0);
-    wall.where              = Utilities::MPI::broadcast(comm, wall.where, 0);
-    wall.n_without_opposite = Utilities::MPI::broadcast(comm, wall.n_without_opposite, 0);
-    return wall;
+    return std::move(measure(design, mirrors, {outward}, subdivisions)[0]);
+  }
+
+
+
+  std::pair<WallThickness, WallThickness>
+  walls_and_gaps(const DesignConfiguration &design, const unsigned int subdivisions)
+  {
+    auto both = measure(design, {}, {false, true}, subdivisions);
+    return {std::move(both[0]), std::move(both[1])};
   }
 
 

@@ -9,6 +9,7 @@
 #include <array>
 #include <limits>
 #include <set>
+#include <utility>
 #include <vector>
 
 namespace softopt
@@ -83,6 +84,12 @@ namespace softopt
                  const std::set<types::boundary_id> &mirrors,
                  const bool                          outward      = false,
                  const unsigned int                  subdivisions = 2);
+
+  /** wall_thickness() of a whole part (no symmetry planes) both ways:
+   * its walls (inward rays) and its gaps (outward rays), from one sampled
+   * surface and one AABB tree. Collective. */
+  std::pair<WallThickness, WallThickness>
+  walls_and_gaps(const DesignConfiguration &design, const unsigned int subdivisions);
 
   /** The subdivisions k of wall_thickness() that sample the surface
    * about @p sampling_size mm apart: the mean edge length of the mesh's

@@ -148,9 +148,14 @@ namespace softopt
             }
         };
         const unsigned int k = surface_subdivisions(design, sampling_size);
-        add(wall_thickness(design, mirrors, false, k), minimum);
         if (minimum_gap > 0)
-          add(wall_thickness(design, mirrors, true, k), minimum_gap);
+          {
+            const auto [walls, gaps] = walls_and_gaps(design, k);
+            add(walls, minimum);
+            add(gaps, minimum_gap);
+          }
+        else
+          add(wall_thickness(design, mirrors, false, k), minimum);
         if (derivatives != nullptr)
           {
             derivatives->d_da.clear();
