@@ -86,6 +86,47 @@ namespace softopt
         }
       return "";
     }
+
+
+
+    /** Writes @p wall's field into @p vtu and adds its row "minimum
+     * <measure>" (wall thickness, gap) to castability.csv with a line:
+     * the smallest distance and where, "warning" below @p at_least (the
+     * entry @p entry) or where an inward ray found no opposite wall (the
+     * surface is not closed there); empty when every ray leaves the part
+     * (gaps on a convex part). */
+    void
+    report_minimum(const WallThickness     &wall,
+                   const std::string       &measure,
+                   const double             at_least,
+                   const std::string       &entry,
+                   const std::string       &vtu,
+                   const OutputDirectory   &out,
+                   const MPI_Comm           comm,
+                   CsvWriter               &csv,
+                   ConditionalOStream      &pcout)
+    {
+      on_rank_zero(comm, [&]() { write_wall_thickness_vtu(wall, out.file(vtu)); });
+      const bool found = std::isfinite(wall.minimum);
+      const bool below = wall.minimum < at_least;
+      const bool open  = !wall.outward && wall.n_without_opposite > 0;
+      std::vector<std::string> row{measure, found ? CsvWriter::format(wall.minimum) : "", "mm"};
+      for (unsigned int c = 0; c < 3; ++c)
+        row.push_back(found ? CsvWriter::format(wall.where[c]) : "");
+      row.push_back(below || open ? "warning" : "ok");
+      csv.add_row(row);
+      if (found)
+        pcout << "  " << measure << ' ' << std::setprecision(4) << wall.minimum << " mm at ("
+              << wall.where << ") mm: " << (below ? "warning, below " : "ok, at least ")
+              << at_least << " mm (" << entry << "; the field is in " << vtu << ")" << std::endl;
+      else
+        pcout << "  " << measure << ": none, every " << (wall.outward ? "outward" : "inward")
+              << " ray leaves the part" << (open ? "" : ", ok") << std::endl;
+      if (open)
+        pcout << "  warning: from " << wall.n_without_opposite << " surface nodes the "
+              << "inward ray found no opposite wall (-1 in " << vtu << "): is the "
+              << "surface closed?" << std::endl;
+    }
   } // namespace
 
 
@@ -118,41 +159,11 @@ namespace softopt
       std::tie(wall, gap) = walls_and_gaps(design, k);
     else
       wall = wall_thickness(design, mirrors, false, k);
-    on_rank_zero(comm, [&]() { write_wall_thickness_vtu(wall, out.file("wall_thickness.vtu")); });
-    const double minimum = settings.castability.minimum_wall_thickness;
-    // A ray without an opposite wall: the surface is not closed there.
-    const bool thin = wall.minimum < minimum || wall.n_without_opposite > 0;
-    std::vector<std::string> row{"minimum wall thickness", CsvWriter::format(wall.minimum), "mm"};
-    for (const auto &x : place(wall.where))
-      row.push_back(x);
-    row.push_back(thin ? "warning" : "ok");
-    csv.add_row(row);
-    pcout << "  minimum wall thickness " << std::setprecision(4) << wall.minimum << " mm at ("
-          << wall.where << ") mm: "
-          << (wall.minimum < minimum ? "warning, below " : "ok, at least ") << minimum
-          << " mm (Minimum wall thickness; the field is in wall_thickness.vtu)" << std::endl;
-    if (wall.n_without_opposite > 0)
-      pcout << "  warning: from " << wall.n_without_opposite << " surface nodes the "
-            << "inward ray found no opposite wall (-1 in wall_thickness.vtu): is the "
-            << "surface closed?" << std::endl;
-
+    report_minimum(wall, "minimum wall thickness", settings.castability.minimum_wall_thickness,
+                   "Minimum wall thickness", "wall_thickness.vtu", out, comm, csv, pcout);
     if (gap)
-      {
-        on_rank_zero(comm, [&]() { write_wall_thickness_vtu(*gap, out.file("gap.vtu")); });
-        const double at_least = settings.castability.minimum_gap;
-        const bool   narrow   = gap->minimum < at_least;
-        row = {"minimum gap", std::isfinite(gap->minimum) ? CsvWriter::format(gap->minimum) : "", "mm"};
-        for (const auto &x : place(gap->where))
-          row.push_back(std::isfinite(gap->minimum) ? x : "");
-        row.push_back(narrow ? "warning" : "ok");
-        csv.add_row(row);
-        if (std::isfinite(gap->minimum))
-          pcout << "  minimum gap " << std::setprecision(4) << gap->minimum << " mm at ("
-                << gap->where << ") mm: " << (narrow ? "warning, below " : "ok, at least ")
-                << at_least << " mm (Minimum gap; the field is in gap.vtu)" << std::endl;
-        else
-          pcout << "  minimum gap: none, every outward ray leaves the part, ok" << std::endl;
-      }
+      report_minimum(*gap, "minimum gap", settings.castability.minimum_gap, "Minimum gap",
+                     "gap.vtu", out, comm, csv, pcout);
     else
       {
         csv.add_row({"minimum gap", "", "mm", "", "", "", "not measured"});
@@ -160,7 +171,7 @@ namespace softopt
       }
 
     const auto crossing = design_self_intersections(design);
-    row = {"self-intersections", std::to_string(crossing.pairs), "triangle pairs"};
+    std::vector<std::string> row{"self-intersections", std::to_string(crossing.pairs), "triangle pairs"};
     for (const auto &x : place(crossing.where))
       row.push_back(crossing.pairs > 0 ? x : "");
     row.push_back(crossing.pairs > 0 ? "refused" : "ok");
