@@ -142,6 +142,7 @@ namespace softopt
       wall.reflections.assign(wall.nodes.size(), {});
       wall.hit.assign(wall.nodes.size(), WallThickness::none);
       wall.differentiable.assign(wall.nodes.size(), false);
+      wall.corner.assign(wall.nodes.size(), false);
       wall.thickness.assign(wall.nodes.size(), std::numeric_limits<double>::infinity());
       for (unsigned int i = 0; i < wall.nodes.size(); ++i)
         {
@@ -195,13 +196,15 @@ namespace softopt
                 {
                   wall.thickness[i] = length;
                   wall.hit[i]       = t;
+                  // More than 60 degrees from facing the ray (along it
+                  // included): the neighbouring face of a corner.
+                  wall.corner[i] = std::abs(direction * unit_normal[t]) < 0.5;
                   // thickness_gradient() for a straight ray from a node off
-                  // the planes that crosses its triangle at more than 3
-                  // degrees (not along it: there the length jumps).
+                  // the planes that ends at no corner (never along its
+                  // triangle, where the length jumps).
                   wall.differentiable[i] =
                     wall.reflections[i].empty() && into_body.norm() == 0 &&
-                    boost::get<Kernel::Point_3>(&hit->first) != nullptr &&
-                    std::abs(direction * unit_normal[t]) > 0.05;
+                    boost::get<Kernel::Point_3>(&hit->first) != nullptr && !wall.corner[i];
                   break;
                 }
               wall.reflections[i].push_back(t);
@@ -211,6 +214,8 @@ namespace softopt
               const auto &plane = targets.on_plane.at(targets.ids[t]);
               skip.insert(skip.end(), plane.begin(), plane.end());
             }
+          if (wall.corner[i])
+            continue;
           if (wall.thickness[i] < wall.minimum)
             {
               wall.minimum = wall.thickness[i];
@@ -405,8 +410,9 @@ namespace softopt
     const std::string name = wall.outward ? "gap_mm" : "wall_thickness_mm";
     vtu << "</DataArray>\n</Cells>\n<PointData Scalars=\"" << name << "\">\n"
         << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
-    for (const double t : wall.thickness)
-      vtu << (std::isfinite(t) ? t : -1.) << '\n'; // -1: no opposite surface (a gap ray leaves)
+    for (std::size_t i = 0; i < wall.thickness.size(); ++i) // -1: no opposite surface
+      vtu << (wall.corner[i] ? -2. : std::isfinite(wall.thickness[i]) ? wall.thickness[i] : -1.)
+          << '\n';
     vtu << "</DataArray>\n</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
     write_whole_file(file, vtu.str());
   }

@@ -41,8 +41,11 @@ namespace softopt
      * surface, castability's measure; the nodes: points of the curved
      * faces "Sampling size" apart, their corner and midside nodes by
      * default) and t_min the entry "Minimum
-     * thickness". Nodes whose ray reflects at a symmetry plane or runs
-     * along a triangle add nothing (their length has no derivative). Q is
+     * thickness". Nodes whose ray reflects at a symmetry plane add
+     * nothing (their length has no derivative), nor those whose ray ends
+     * at a corner (WallThickness::corner: on a face turned more than 60
+     * degrees from facing it, as near a clamped base whose side the
+     * design tilts, where the ray leaves through the base). Q is
      * 0 while every wall is at least t_min thick and grows smoothly
      * (continuous derivative) as walls thin below it; with a "Minimum
      * gap" g_min the same sum over the gaps g_i outside the part is
@@ -129,7 +132,7 @@ namespace softopt
           for (const unsigned int i : smooth)
             {
               const double shortfall = 1 - wall.thickness[i] / at_least;
-              // (A ray that runs along a triangle has no derivative.)
+              // (Nor a ray that ends at a corner: a corner is no wall.)
               if (!std::isfinite(wall.thickness[i]) || shortfall <= 0 || !wall.differentiable[i])
                 continue;
               Q += shortfall * shortfall / n;
