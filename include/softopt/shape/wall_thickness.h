@@ -118,7 +118,7 @@ namespace softopt
    * triangle's plane). The ray thickness is smooth while the ray stays on
    * the same triangle: piecewise smooth and continuous in the positions.
    * Empty where wall.differentiable[i] is not set (reflected rays, nodes
-   * on symmetry planes, rays along a triangle). On rank 0, after
+   * on symmetry planes, rays that end at a corner). On rank 0, after
    * wall_thickness().
    */
   std::vector<std::pair<unsigned int, Tensor<1, 3>>>
