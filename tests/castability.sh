@@ -30,17 +30,24 @@ sphere() { # OUTPUT_DIRECTORY MINIMUM_WALL_THICKNESS ITERATIONS
   printf 'subsection Castability\n  set Minimum wall thickness = %s\nend\n' "$2"
 }
 
+# The samples of wall_thickness.vtu in the folder argv[1]: points, thickness.
+wall_samples() {
+  cat <<'PY'
+import re, sys
+text = open(sys.argv[1] + "/wall_thickness.vtu").read()
+arrays = re.findall(r'<DataArray[^>]*>\n(.*?)</DataArray>', text, re.S)
+points = [tuple(map(float, l.split())) for l in arrays[0].strip().split("\n")]
+thickness = [float(v) for v in arrays[-1].split()]
+PY
+}
+
 sphere thin 0.9 1 > thin.prm
 "$softopt" check-design thin.prm > thin.log 2>&1 || { echo "FAIL check-design"; cat thin.log; exit 1; }
-/usr/bin/python3 - thin <<'PY' || failures=$((failures + 1))
+{ wall_samples; cat <<'PY'
 import csv, math, re, sys
 d = sys.argv[1]
 rows = {r["check"]: r for r in csv.DictReader(open(d + "/castability.csv"))}
 wall = rows["minimum wall thickness"]
-text = open(d + "/wall_thickness.vtu").read()
-arrays = re.findall(r'<DataArray[^>]*>\n(.*?)</DataArray>', text, re.S)
-points = [tuple(map(float, l.split())) for l in arrays[0].strip().split("\n")]
-thickness = [float(v) for v in arrays[-1].split()]
 # Every node of the spheres, their rims on the symmetry planes included
 # (there the normal is projected onto the plane); -1: no opposite wall.
 on_spheres = [t for p, t in zip(points, thickness)
@@ -57,6 +64,7 @@ ok3 = crossing["value"] == "0" and crossing["verdict"] == "ok"
 print(("ok  " if ok3 else "FAIL") + " self-intersections %s, %s" % (crossing["value"], crossing["verdict"]))
 sys.exit(0 if ok and ok2 and ok3 else 1)
 PY
+} | /usr/bin/python3 - thin || failures=$((failures + 1))
 
 sphere thick 1.5 1 > thick.prm
 "$softopt" check-design thick.prm > thick.log 2>&1 || { echo "FAIL check-design"; cat thick.log; exit 1; }
@@ -152,15 +160,11 @@ sed -e 's/^set Output directory.*/set Output directory = leaning/' \
     -e 's/set Mesh size = .*/set Mesh size = 1/' slot.prm > leaning.prm
 printf 'subsection Castability\n  set Sampling size = 0.25\nend\n' >> leaning.prm
 "$softopt" check-design leaning.prm > leaning.log 2>&1 || { echo "FAIL check-design leaning"; cat leaning.log; exit 1; }
-/usr/bin/python3 - leaning <<'PY' || failures=$((failures + 1))
+{ wall_samples; cat <<'PY'
 import csv, re, sys
 d = sys.argv[1]
 rows = {r["check"]: r for r in csv.DictReader(open(d + "/castability.csv"))}
 wall = rows["minimum wall thickness"]
-text = open(d + "/wall_thickness.vtu").read()
-arrays = re.findall(r'<DataArray[^>]*>\n(.*?)</DataArray>', text, re.S)
-points = [tuple(map(float, l.split())) for l in arrays[0].strip().split("\n")]
-thickness = [float(v) for v in arrays[-1].split()]
 # Corners at the samples of the leaning side just above the base.
 low = [t for p, t in zip(points, thickness) if 0.1 < p[0] < 0.5 and (p[1]**2 + p[2]**2)**0.5 > 7.8]
 ok = len(low) > 20 and all(t == -2 for t in low)
@@ -170,4 +174,5 @@ ok2 = abs(minimum - 2) < 1e-6 and wall["verdict"] == "ok"
 print(("ok  " if ok2 else "FAIL") + " minimum wall thickness %.6f mm (the cap and the base: 2, error < 1e-6), %s" % (minimum, wall["verdict"]))
 sys.exit(0 if ok and ok2 else 1)
 PY
+} | /usr/bin/python3 - leaning || failures=$((failures + 1))
 exit $failures
