@@ -16,6 +16,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <optional>
 
 namespace softopt
 {
@@ -177,95 +178,100 @@ namespace softopt
                 ExcMessage(settings.input->path() +
                            ": \"optimize\" needs at least one objective "
                            "(subsection Objective 1)."));
-    // A checkpoint written after a remesh lives on that mesh.
-    DesignProblem problem(settings,
-                          comm,
-                          restart ? Checkpoint::mesh_file(settings.output_directory) :
-                                    "");
-    pcout << "Mesh: " << problem.hyperelastic_problem().get_dof_handler()
-                           .get_triangulation()
-                           .n_global_active_cells()
-          << " tetrahedra, "
-          << problem.design_configuration().get_dof_handler().n_dofs()
-          << " design variables" << std::endl;
-    // The final analysis tracks these points on the final design; say now,
-    // not hours later, where they land on the initial one.
-    if (!settings.output.tracked_points.empty())
-      TrackedPoints(problem.hyperelastic_problem(),
-                    problem.design_configuration(),
-                    settings.output.tracked_points)
-        .print(pcout);
+    // The verification below needs the loop's results, not its memory
+    // (factors, states, the filter: 16 GB on the contractor's 0.8 mm mesh),
+    // so the loop lives in this block.
+    std::optional<OutputDirectory> output;
+    bool                           failed = false;
+    VerificationRow                first;
+    {
+      // A checkpoint written after a remesh lives on that mesh.
+      DesignProblem problem(settings,
+                            comm,
+                            restart ? Checkpoint::mesh_file(settings.output_directory) :
+                                      "");
+      pcout << "Mesh: " << problem.hyperelastic_problem().get_dof_handler()
+                             .get_triangulation()
+                             .n_global_active_cells()
+            << " tetrahedra, "
+            << problem.design_configuration().get_dof_handler().n_dofs()
+            << " design variables" << std::endl;
+      // The final analysis tracks these points on the final design; say now,
+      // not hours later, where they land on the initial one.
+      if (!settings.output.tracked_points.empty())
+        TrackedPoints(problem.hyperelastic_problem(),
+                      problem.design_configuration(),
+                      settings.output.tracked_points)
+          .print(pcout);
 
-    // Input is checked: only now touch the output directory, which this
-    // run then owns (a lock), and which holds no other run's results.
-    const OutputDirectory out(settings.output_directory, comm);
-    check_earlier_run(settings, out, start, comm);
-    if (start != Start::restart)
-      out.write_parameters(settings.prm);
-    ShapeOptimizer     optimizer(settings.optimization, settings.output, problem, out);
-    const std::string  reason = optimizer.run(restart);
-    pcout << "Stopped: " << reason << std::endl;
-    out.write_text("stop_reason.txt", reason + "\n");
-    if (!optimizer.accepted_a_design())
-      return 1;
+      // Input is checked: only now touch the output directory, which this
+      // run then owns (a lock), and which holds no other run's results.
+      const OutputDirectory &out = output.emplace(settings.output_directory, comm);
+      check_earlier_run(settings, out, start, comm);
+      if (start != Start::restart)
+        out.write_parameters(settings.prm);
+      ShapeOptimizer     optimizer(settings.optimization, settings.output, problem, out);
+      const std::string  reason = optimizer.run(restart);
+      pcout << "Stopped: " << reason << std::endl;
+      out.write_text("stop_reason.txt", reason + "\n");
+      if (!optimizer.accepted_a_design())
+        return 1;
 
-    // The final design: the last one the physics accepted (a refused
-    // design leaves it in place, DesignProblem::evaluate).
-    const unsigned int n_triangles =
-      write_design_stl(problem.design_configuration(), out.file("design.stl"));
-    pcout << "Wrote " << out.file("design.stl") << " (" << n_triangles
-          << " triangles, mm)" << std::endl;
+      // The final design: the last one the physics accepted (a refused
+      // design leaves it in place, DesignProblem::evaluate).
+      const unsigned int n_triangles =
+        write_design_stl(problem.design_configuration(), out.file("design.stl"));
+      pcout << "Wrote " << out.file("design.stl") << " (" << n_triangles
+            << " triangles, mm)" << std::endl;
 
-    write_design_mesh(problem.design_configuration(), out.file("design.msh"));
-    write_design_parameters(settings, out);
-    pcout << "Wrote " << out.file("design.msh") << " and " << out.file("design.prm")
-          << " (the final design as a quadratic mesh, and the case on it: "
-             "\"softopt analyze "
-          << out.file("design.prm") << "\")" << std::endl;
+      write_design_mesh(problem.design_configuration(), out.file("design.msh"));
+      write_design_parameters(settings, out);
+      pcout << "Wrote " << out.file("design.msh") << " and " << out.file("design.prm")
+            << " (the final design as a quadratic mesh, and the case on it: "
+               "\"softopt analyze "
+            << out.file("design.prm") << "\")" << std::endl;
 
-    pcout << "\nForward analysis of the final design:" << std::endl;
-    const std::string final_directory = out.file("final_analysis");
-    if (Utilities::MPI::this_mpi_process(comm) == 0)
-      std::filesystem::create_directories(final_directory);
-    MPI_Barrier(comm);
-    // The design's targets and equal steps.
-    const std::vector<double> targets = problem.final_analysis_path();
-    const auto result = follow_load_path(problem.hyperelastic_problem(),
-                                         problem.design_configuration(),
-                                         settings,
-                                         problem.functionals(),
-                                         targets,
-                                         final_directory,
-                                         pcout);
-    check_castability(settings, problem.design_configuration(), out, pcout);
-    bool verified = true;
-    if (!settings.verification.mesh_sizes.empty())
-      {
-        VerificationRow first;
-        first.mesh_size_mm =
-          optimization_mesh_size(settings, problem.design_configuration());
-        first.cells = problem.hyperelastic_problem()
-                        .get_dof_handler()
-                        .get_triangulation()
-                        .n_global_active_cells();
-        first.dofs   = problem.hyperelastic_problem().get_dof_handler().n_dofs();
-        first.values = values_at_targets(problem.hyperelastic_problem(),
-                                         problem.design_configuration(),
-                                         problem.functionals(),
-                                         result);
-        verified = verify_design(settings, out.file("design.msh"), first, out, pcout);
-      }
-    plot(out.path(), comm, pcout);
+      pcout << "\nForward analysis of the final design:" << std::endl;
+      const std::string final_directory = out.file("final_analysis");
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        std::filesystem::create_directories(final_directory);
+      MPI_Barrier(comm);
+      // The design's targets and equal steps.
+      const std::vector<double> targets = problem.final_analysis_path();
+      const auto result = follow_load_path(problem.hyperelastic_problem(),
+                                           problem.design_configuration(),
+                                           settings,
+                                           problem.functionals(),
+                                           targets,
+                                           final_directory,
+                                           pcout);
+      check_castability(settings, problem.design_configuration(), out, pcout);
+      const auto &dof_handler = problem.hyperelastic_problem().get_dof_handler();
+      first.mesh_size_mm = optimization_mesh_size(settings, problem.design_configuration());
+      first.cells        = dof_handler.get_triangulation().n_global_active_cells();
+      first.dofs         = dof_handler.n_dofs();
+      first.values = values_at_targets(problem.hyperelastic_problem(),
+                                       problem.design_configuration(),
+                                       problem.functionals(),
+                                       result);
+      failed = optimizer.failed() || result.failed;
+      if (settings.output.print_timings)
+        {
+          // The unit of scripts/bench_iteration: one assembly plus one
+          // numerical factorization of the physics (means over every mesh
+          // of the run).
+          pcout << "Physics over the run: " << problem.physics_statistics().summary()
+                << std::endl;
+          problem.timer().print_summary();
+        }
+    }
+
+    const bool verified =
+      settings.verification.mesh_sizes.empty() ||
+      verify_design(settings, output->file("design.msh"), first, *output, pcout);
+    plot(output->path(), comm, pcout);
     if (settings.output.print_timings)
-      {
-        // The unit of scripts/bench_iteration: one assembly plus one
-        // numerical factorization of the physics (means over every mesh
-        // of the run).
-        pcout << "Physics over the run: " << problem.physics_statistics().summary()
-              << std::endl;
-        problem.timer().print_summary();
-        pcout << "Wall time: " << timer.wall_time() << " s" << std::endl;
-      }
-    return optimizer.failed() || result.failed || !verified ? 1 : 0;
+      pcout << "Wall time: " << timer.wall_time() << " s" << std::endl;
+    return failed || !verified ? 1 : 0;
   }
 } // namespace softopt
