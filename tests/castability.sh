@@ -44,7 +44,7 @@ PY
 sphere thin 0.9 1 > thin.prm
 "$softopt" check-design thin.prm > thin.log 2>&1 || { echo "FAIL check-design"; cat thin.log; exit 1; }
 { wall_samples; cat <<'PY'
-import csv, math, re, sys
+import csv, math, sys
 d = sys.argv[1]
 rows = {r["check"]: r for r in csv.DictReader(open(d + "/castability.csv"))}
 wall = rows["minimum wall thickness"]
@@ -161,7 +161,7 @@ sed -e 's/^set Output directory.*/set Output directory = leaning/' \
 printf 'subsection Castability\n  set Sampling size = 0.25\nend\n' >> leaning.prm
 "$softopt" check-design leaning.prm > leaning.log 2>&1 || { echo "FAIL check-design leaning"; cat leaning.log; exit 1; }
 { wall_samples; cat <<'PY'
-import csv, re, sys
+import csv, sys
 d = sys.argv[1]
 rows = {r["check"]: r for r in csv.DictReader(open(d + "/castability.csv"))}
 wall = rows["minimum wall thickness"]
