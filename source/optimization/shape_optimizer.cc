@@ -15,6 +15,24 @@
 
 namespace softopt
 {
+  namespace
+  {
+    /** The field of a history.csv @p row under @p column of @p header
+     * (numbers only, no quoting); empty if there is none. */
+    std::string
+    csv_field(const std::string &header, const std::string &row, const std::string &column)
+    {
+      std::istringstream names(header), fields(row);
+      std::string        name, field;
+      while (std::getline(names, name, ',') && std::getline(fields, field, ','))
+        if (name == column)
+          return field;
+      return "";
+    }
+  } // namespace
+
+
+
   ShapeOptimizer::ShapeOptimizer(const OptimizationParameters &parameters,
                                  const OutputParameters       &output,
                                  DesignProblem                &problem,
@@ -86,13 +104,14 @@ namespace softopt
 
         // After a warm start, check the states against those from rest
         // every "Path from rest interval" iterations, at every mesh update
-        // (and new mesh), at the first iteration of a restart, after a check that switched
-        // branch (the designs there have several equilibria: the warm start
-        // can leave the physical one again at any iteration), and at the
-        // last iteration, whose values the run reports.
+        // (and new mesh), after a check that switched branch (the designs
+        // there have several equilibria: the warm start can leave the
+        // physical one again at any iteration), and at the last iteration,
+        // whose values the run reports. A restart checks where the
+        // uninterrupted run does: the checkpoint holds its states.
         const bool check_from_rest =
           opt.from_rest_interval > 0 &&
-          (k == first || switched_last_check || opt.every(k, opt.from_rest_interval) ||
+          (switched_last_check || opt.every(k, opt.from_rest_interval) ||
            mesh_update || k + 1 == opt.maximum_iterations);
 
         Timer               timer;
@@ -313,6 +332,9 @@ namespace softopt
 
     // history.csv keeps its header and the rows before the checkpoint; a
     // row cut short by a kill, or a blank line, is dropped.
+    // The row before the checkpoint says whether its check switched
+    // branch, so that the restart checks the next design as the
+    // uninterrupted run does.
     std::vector<std::string> lines;
     long                     last_row = -1;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
@@ -334,8 +356,11 @@ namespace softopt
             last_row = std::max(last_row, row);
             if (row < long(k))
               lines.push_back(line);
+            if (row + 1 == long(k))
+              switched_last_check = csv_field(lines[0], line, "branch_switched") == "1";
           }
       }
+    switched_last_check = Utilities::MPI::broadcast(comm, switched_last_check, 0);
     // A restart that would not run further would only rewrite a finished
     // run's results (a run killed in its final analysis is not finished).
     bool finished = false;
