@@ -331,10 +331,9 @@ namespace softopt
     problem.restore(x);
 
     // history.csv keeps its header and the rows before the checkpoint; a
-    // row cut short by a kill, or a blank line, is dropped.
-    // The row before the checkpoint says whether its check switched
-    // branch, so that the restart checks the next design as the
-    // uninterrupted run does.
+    // row cut short by a kill, or a blank line, is dropped. The row just
+    // before the checkpoint says whether its check switched branch, so
+    // that the restart checks the next design as the uninterrupted run does.
     std::vector<std::string> lines;
     long                     last_row = -1;
     if (Utilities::MPI::this_mpi_process(comm) == 0)
