@@ -11,6 +11,7 @@
 #include <softopt/app/optimization.h>
 #include <softopt/app/settings.h>
 #include <softopt/app/verification.h>
+#include <softopt/base/blas_kernels.h>
 
 #include <algorithm>
 #include <iostream>
@@ -56,6 +57,7 @@ namespace
 int
 main(int argc, char **argv)
 {
+  softopt::use_the_cpus_blas_kernels(argv); // before MPI: it may start the program again
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const bool root = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   // --restart may stand anywhere after the command.
