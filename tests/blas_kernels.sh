@@ -27,7 +27,6 @@ expect() { # NAME CORES_SEEN CORES_EXPECTED
   fi
 }
 
-
 seen=$(OPENBLAS_VERBOSE=2 "$softopt" print-parameters 2>&1 | cores)
 if [ -z "$seen" ]; then
   echo "the BLAS is not OpenBLAS: nothing to check"
