@@ -41,16 +41,12 @@ else
 fi
 expect "one rank" "$seen" "$wanted"
 
+# Each kernel set with the number of loads, "Prescottx2 SkylakeXx2".
+tally() { tr ' ' '\n' | sort | uniq -c | awk '{print $2 "x" $1}' | tr '\n' ' ' | sed 's/ $//'; }
 mpi_flags="--oversubscribe"
 [ "$(id -u)" = 0 ] && mpi_flags="$mpi_flags --allow-run-as-root"
-seen=$(mpirun $mpi_flags -np 2 -x OPENBLAS_VERBOSE=2 "$softopt" print-parameters 2>&1 | cores |
-       tr ' ' '\n' | sort | uniq -c | awk '{print $2 "x" $1}' | tr '\n' ' ' | sed 's/ $//')
-if [ "$wanted" = "$chosen" ]; then
-  wanted_mpi="${chosen}x2"
-else
-  wanted_mpi=$(printf '%s\n' Prescott Prescott "$better" "$better" | sort | uniq -c |
-               awk '{print $2 "x" $1}' | tr '\n' ' ' | sed 's/ $//')
-fi
+seen=$(mpirun $mpi_flags -np 2 -x OPENBLAS_VERBOSE=2 "$softopt" print-parameters 2>&1 | cores | tally)
+wanted_mpi=$(echo "$wanted $wanted" | tally)
 expect "two ranks" "$seen" "$wanted_mpi"
 
 seen=$(OPENBLAS_CORETYPE=Prescott OPENBLAS_VERBOSE=2 "$softopt" print-parameters 2>&1 | cores)
